@@ -1,0 +1,2 @@
+//! chapter placeholder
+pub mod figures;
