@@ -27,7 +27,13 @@ impl Camera {
     ///
     /// `up` need not be perpendicular to the view direction, only not
     /// parallel to it.
-    pub fn look_at(look_from: DVec3, look_at: DVec3, up: DVec3, vfov_degrees: f64, aspect: f64) -> Camera {
+    pub fn look_at(
+        look_from: DVec3,
+        look_at: DVec3,
+        up: DVec3,
+        vfov_degrees: f64,
+        aspect: f64,
+    ) -> Camera {
         let forward = (look_at - look_from).normalize();
         let right = forward.cross(up).normalize();
         let up = right.cross(forward);

@@ -50,7 +50,7 @@ impl Interval {
 
     /// Does it contain nothing?
     pub fn is_empty(&self) -> bool {
-        !(self.min <= self.max)
+        self.min.is_nan() || self.max.is_nan() || self.min > self.max
     }
 
     /// The same interval with `max` lowered to `t` (the closest-hit loop).

@@ -1,10 +1,71 @@
-//! The raystep figure kit (placeholder until the kit lands).
+//! The raystep figure kit: lecture diagrams drawn in code and written as SVG and PNG files that
+//! look the same on every machine and are byte-identical from run to run.
+//!
+//! A chapter builds [`Figure`]s — a name, a caption and a [`Page`] drawn with world-coordinate
+//! primitives — and its diagram binary hands them to [`diagram_main`]. [`render`] turns a figure
+//! into bytes: the page's SVG source is parsed by usvg with only the embedded DejaVu Sans font,
+//! so labels become outlines; the SVG file is written back from that tree and the PNG is the
+//! same tree rasterised at 2× on white.
+//!
+//! # Label markup
+//! Labels ([`Page::label`] and friends) take a little markup: `_` makes the next character, or
+//! the `{...}` group after it, a subscript (`"P_0"`, `"E_{12}"`); `^` likewise a superscript
+//! (`"x^2"`); `\` makes the next character literal (`"a\_b"`). Greek letters are typed directly
+//! (`"θ"`, `"φ"`), and `<`, `>`, `&` are fine (`"f(x, y) > 0"`).
+//!
+//! # Example
+//! ```
+//! use raystep_figure::{Anchor, DVec2, Figure, Page, Stroke, palette, render};
+//!
+//! let mut page = Page::new(320.0, 200.0).view(DVec2::new(-2.0, -1.0), DVec2::new(2.0, 1.5));
+//! page.axes(palette::GREY);
+//! page.arrow(DVec2::ZERO, DVec2::new(1.0, 1.0), &Stroke::new(palette::BLUE));
+//! page.label(DVec2::new(1.0, 1.0), "v_1", Anchor::NE);
+//! let rendered = render(&Figure::new("demo", "A vector.", page)).unwrap();
+//! assert!(rendered.png.starts_with(b"\x89PNG"));
+//! ```
+
+mod cli;
+mod error;
+mod field;
+mod output;
+mod page;
+mod projection;
+mod style;
+mod text;
+
+pub use raystep_core::{DVec2, DVec3};
+
+pub use cli::diagram_main;
+pub use error::FigureError;
+pub use output::{Format, Mismatch, Rendered, check_all, render, write_all};
+pub use page::{Anchor, Page, clip_line};
+pub use projection::Projection;
+pub use style::{Color, Fill, Stroke, palette};
+
+/// The licence of the DejaVu fonts (Bitstream Vera licence, DejaVu changes public domain),
+/// whose glyph outlines end up in every figure. Copied from the `dejavu` crate's
+/// `assets/dejavu-fonts-ttf-2.37/LICENSE`.
+pub const FONT_LICENSE: &str = include_str!("../assets/DejaVu-LICENSE.txt");
+
 /// A named lecture figure.
+#[derive(Clone, Debug)]
 pub struct Figure {
-    /// File stem.
+    /// File stem: `"line-sign"` is written as `line-sign.svg` and `line-sign.png`.
     pub name: String,
+    /// The caption the lecture shows under the figure (not drawn on the page).
+    pub caption: String,
+    /// The drawing.
+    pub page: Page,
 }
-/// Entry point of a chapter's diagram binary.
-pub fn diagram_main(_chapter: &str, _figures: fn() -> Vec<Figure>) -> std::process::ExitCode {
-    std::process::ExitCode::SUCCESS
+
+impl Figure {
+    /// A figure named `name` (the file stem) with its caption and drawing.
+    pub fn new(name: &str, caption: &str, page: Page) -> Figure {
+        Figure {
+            name: name.to_string(),
+            caption: caption.to_string(),
+            page,
+        }
+    }
 }

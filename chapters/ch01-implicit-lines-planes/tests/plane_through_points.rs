@@ -1,0 +1,173 @@
+//! Exercise 2: the implicit plane through three points.
+use ch01::{DVec3, Degenerate, Plane};
+use proptest::prelude::*;
+use raystep_check::{Table, num, seeded, vec3};
+
+fn v(x: f64, y: f64, z: f64) -> DVec3 {
+    DVec3::new(x, y, z)
+}
+
+/// N, d and f at a probe point for planes the lecture draws.
+#[test]
+fn plane_table() {
+    let cases = [
+        (v(0.0, 0.0, 0.0), v(1.0, 0.0, 0.0), v(0.0, 1.0, 0.0)),
+        (v(0.0, 0.0, 0.0), v(0.0, 1.0, 0.0), v(1.0, 0.0, 0.0)),
+        (v(1.0, 0.0, 0.0), v(0.0, 1.0, 0.0), v(0.0, 0.0, 1.0)),
+        (v(0.0, 2.0, 0.0), v(3.0, 2.0, 1.0), v(-1.0, 2.0, 4.0)),
+        (v(1.0, 2.0, 3.0), v(4.0, 0.0, -1.0), v(-2.0, 5.0, 2.0)),
+    ];
+    let probe = v(1.0, 1.0, 1.0);
+    let mut table = Table::new(&["P0", "P1", "P2", "N", "d", "f(1,1,1)"]);
+    for (p0, p1, p2) in cases {
+        let plane = Plane::through(p0, p1, p2).expect("a proper plane");
+        table.row(&[
+            vec3(p0),
+            vec3(p1),
+            vec3(p2),
+            vec3(plane.normal),
+            num(plane.d),
+            num(plane.eval(probe)),
+        ]);
+    }
+    insta::assert_snapshot!(table.to_string());
+}
+
+#[test]
+fn degenerate_input_is_an_error_never_a_nan_normal() {
+    let nan = f64::NAN;
+    let cases = [
+        (
+            "P0 = P1",
+            v(1.0, 2.0, 3.0),
+            v(1.0, 2.0, 3.0),
+            v(0.0, 0.0, 1.0),
+        ),
+        (
+            "P1 = P2",
+            v(0.0, 0.0, 0.0),
+            v(1.0, 1.0, 0.0),
+            v(1.0, 1.0, 0.0),
+        ),
+        (
+            "collinear",
+            v(0.0, 0.0, 0.0),
+            v(1.0, 1.0, 1.0),
+            v(3.0, 3.0, 3.0),
+        ),
+        (
+            "collinear, rounded",
+            v(0.1, 0.2, 0.3),
+            v(0.3, 0.6, 0.9),
+            v(0.7, 1.4, 2.1),
+        ),
+        ("NaN", v(0.0, 0.0, 0.0), v(1.0, nan, 0.0), v(0.0, 1.0, 0.0)),
+        (
+            "infinite",
+            v(0.0, 0.0, f64::INFINITY),
+            v(1.0, 0.0, 0.0),
+            v(0.0, 1.0, 0.0),
+        ),
+        (
+            "overflow",
+            v(-1e308, 0.0, 0.0),
+            v(1e308, 0.0, 0.0),
+            v(0.0, 1.0, 0.0),
+        ),
+        (
+            "tiny, 1e-200",
+            v(0.0, 0.0, 0.0),
+            v(1e-200, 0.0, 0.0),
+            v(0.0, 1e-200, 0.0),
+        ),
+        (
+            "huge, 1e200",
+            v(1e200, 0.0, 0.0),
+            v(2e200, 0.0, 0.0),
+            v(1e200, 1e200, 0.0),
+        ),
+    ];
+    let mut table = Table::new(&["case", "result"]);
+    for (name, p0, p1, p2) in cases {
+        let result = match Plane::through(p0, p1, p2) {
+            Ok(plane) => {
+                assert!(
+                    (plane.normal.length() - 1.0).abs() < 1e-12,
+                    "unit normal for {name}"
+                );
+                format!("ok, N = {}", vec3(plane.normal))
+            }
+            Err(e) => format!("error: {e}"),
+        };
+        table.row(&[name.to_string(), result]);
+    }
+    insta::assert_snapshot!(table.to_string());
+}
+
+#[test]
+fn specific_errors() {
+    let o = DVec3::ZERO;
+    assert_eq!(
+        Plane::through(o, o, DVec3::X),
+        Err(Degenerate::CoincidentPoints)
+    );
+    assert_eq!(
+        Plane::through(o, DVec3::X, 2.0 * DVec3::X),
+        Err(Degenerate::Collinear)
+    );
+}
+
+fn point() -> impl Strategy<Value = DVec3> {
+    (-100.0..100.0f64, -100.0..100.0f64, -100.0..100.0f64).prop_map(|(x, y, z)| v(x, y, z))
+}
+
+proptest! {
+    #![proptest_config(seeded(256))]
+
+    /// N is a unit vector orthogonal to E1 and E2; f is zero at all three
+    /// points; the points run counter-clockwise around N.
+    #[test]
+    fn plane_properties(p0 in point(), p1 in point(), p2 in point()) {
+        let (e1, e2) = (p1 - p0, p2 - p0);
+        // well-shaped triangles only: the property is about the formula
+        prop_assume!(e1.cross(e2).length() > 1e-2 * e1.length() * e2.length());
+        let plane = Plane::through(p0, p1, p2).unwrap();
+        let scale = p0.abs().max(p1.abs()).max(p2.abs()).max_element().max(1.0);
+        prop_assert!((plane.normal.length() - 1.0).abs() <= 1e-14);
+        prop_assert!(plane.normal.dot(e1).abs() <= 1e-12 * e1.length());
+        prop_assert!(plane.normal.dot(e2).abs() <= 1e-12 * e2.length());
+        for p in [p0, p1, p2] {
+            prop_assert!(plane.eval(p).abs() <= 1e-12 * scale);
+        }
+        prop_assert!(e1.cross(e2).dot(plane.normal) > 0.0);
+    }
+}
+
+/// One tilted triangle scaled from 1e-6 to 1e6 and moved away from the
+/// origin: N stays unit and orthogonal to the edges, f stays zero at the
+/// points relative to the coordinates. 0 failures.
+#[test]
+fn stable_from_1e_minus_6_to_1e6() {
+    let shape = [v(0.2, 0.1, 0.7), v(1.9, 0.4, -0.3), v(0.6, 1.5, 0.2)];
+    let mut failures = 0;
+    let mut checked = 0;
+    for exponent in -6..=6 {
+        let s = 10f64.powi(exponent);
+        let offset = v(3.0, -1.0, 2.0) * s;
+        let [p0, p1, p2] = shape.map(|p| p * s + offset);
+        let plane = Plane::through(p0, p1, p2).unwrap();
+        let scale = p0.abs().max(p1.abs()).max(p2.abs()).max_element();
+        checked += 1;
+        let ok = (plane.normal.length() - 1.0).abs() <= 1e-14
+            && plane.normal.dot(p1 - p0).abs() <= 1e-13 * s
+            && plane.normal.dot(p2 - p0).abs() <= 1e-13 * s
+            && [p0, p1, p2]
+                .iter()
+                .all(|&p| plane.eval(p).abs() <= 1e-14 * scale);
+        if !ok {
+            failures += 1;
+        }
+    }
+    assert_eq!(checked, 13);
+    assert_eq!(failures, 0);
+}

@@ -1,0 +1,14 @@
+//! Helpers for raystep's tests, shared by every chapter.
+//!
+//! Snapshots hold rounded numbers so that a correct student solution that
+//! computes in another order (and so rounds differently in the last bits)
+//! still matches the reference's snapshot.
+#![deny(missing_docs)]
+
+mod round;
+mod seeded;
+mod table;
+
+pub use round::{num, num_places, vec2, vec3};
+pub use seeded::seeded;
+pub use table::Table;
