@@ -1,5 +1,6 @@
 use thiserror::Error;
 
+// ANCHOR: degenerate
 /// Why no line or plane passes through the given points.
 ///
 /// Returned instead of a line or plane whose normal would be NaN, zero or
@@ -19,3 +20,4 @@ pub enum Degenerate {
     #[error("the points are too far apart: P1 - P0 overflows")]
     Overflow,
 }
+// ANCHOR_END: degenerate

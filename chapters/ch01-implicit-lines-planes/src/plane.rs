@@ -15,7 +15,9 @@ pub struct Plane {
     pub d: f64,
 }
 
+// ANCHOR: collinear_sine
 /// Below this sine of the angle between E₁ and E₂ the points count as
 /// collinear: the rounding of the inputs alone could then turn the normal
 /// by more than about 1e-4 rad.
 pub const COLLINEAR_SINE: f64 = 1e-12;
+// ANCHOR_END: collinear_sine
