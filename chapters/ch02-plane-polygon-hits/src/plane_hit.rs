@@ -2,6 +2,7 @@ use crate::ray_plane;
 use ch01::Plane;
 use raystep_core::{Hit, Interval, Ray};
 
+// ANCHOR: cases
 /// What a ray does at a plane: the lecture's cases.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum RayPlane {
@@ -15,6 +16,7 @@ pub enum RayPlane {
     /// It lies in the plane: every point is on it, there is no single hit.
     InPlane,
 }
+// ANCHOR_END: cases
 
 impl RayPlane {
     /// The parameter of an accepted hit.

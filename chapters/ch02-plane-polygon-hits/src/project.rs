@@ -1,5 +1,6 @@
 use raystep_core::{DVec2, DVec3};
 
+// ANCHOR: project
 /// The axis (0 = x, 1 = y, 2 = z) along which `normal` is largest.
 ///
 /// Dropping that coordinate projects a polygon onto the coordinate plane
@@ -25,6 +26,7 @@ pub fn project(p: DVec3, axis: usize) -> DVec2 {
         _ => DVec2::new(p.x, p.y),
     }
 }
+// ANCHOR_END: project
 
 #[cfg(test)]
 mod tests {
