@@ -1,1 +1,217 @@
-fn main() {}
+//! `raystep`: the lecture's command line.
+//!
+//! * `raystep figures` draws every lecture figure into `book/src/figures/`
+//!   (`--check` compares instead of writing);
+//! * `raystep check ch01` runs a chapter's tests in student mode and says,
+//!   exercise by exercise, what passes.
+
+mod check;
+mod figures;
+mod workspace;
+
+use std::io;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+
+/// raystep: a lecture on ray tracing in Rust.
+#[derive(Debug, Parser)]
+#[command(version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Draw every lecture figure into the book (or check the committed ones).
+    Figures {
+        /// Only this chapter: `01`, `1` or `ch01`.
+        #[arg(long, value_name = "CHAPTER")]
+        chapter: Option<String>,
+        /// The folder that holds one folder per chapter [default: <workspace>/book/src/figures].
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+        /// Which files to draw for each figure.
+        #[arg(long, value_enum, default_value_t = FormatArg::Both)]
+        format: FormatArg,
+        /// Write nothing; fail and name every figure file that differs, is missing or is extra.
+        #[arg(long)]
+        check: bool,
+    },
+    /// Run a chapter's tests in student mode and report each exercise.
+    Check {
+        /// The chapter: `ch01`, `01` or `1`.
+        chapter: String,
+        /// Run the reference solution instead of the exercise stubs.
+        #[arg(long)]
+        reference: bool,
+        /// Build in this target directory [env: RAYSTEP_CHECK_TARGET_DIR; default: cargo's].
+        #[arg(long, value_name = "DIR")]
+        target_dir: Option<PathBuf>,
+        /// Do not echo cargo's progress on stderr.
+        #[arg(long, short)]
+        quiet: bool,
+    },
+}
+
+/// `--format` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum FormatArg {
+    Svg,
+    Png,
+    Both,
+}
+
+impl From<FormatArg> for raystep_figure::Format {
+    fn from(format: FormatArg) -> raystep_figure::Format {
+        match format {
+            FormatArg::Svg => raystep_figure::Format::Svg,
+            FormatArg::Png => raystep_figure::Format::Png,
+            FormatArg::Both => raystep_figure::Format::Both,
+        }
+    }
+}
+
+/// Everything that stops a command; shown as one line on stderr.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// The chapter argument names no chapter.
+    #[error("{wanted}: no such chapter; chapters are {known}")]
+    NoSuchChapter {
+        /// The normalised argument, `ch99`.
+        wanted: String,
+        /// `ch01, ch02`.
+        known: String,
+    },
+    /// A file or folder could not be read or written.
+    #[error("{}: {source}", shown(path))]
+    Io {
+        /// The file or folder.
+        path: PathBuf,
+        /// What went wrong.
+        source: io::Error,
+    },
+    /// The figure kit failed (its message names the path).
+    #[error(transparent)]
+    Figure(#[from] raystep_figure::FigureError),
+    /// `cargo` could not be started.
+    #[error("cannot run `{program}`: {source}")]
+    Spawn {
+        /// The cargo program.
+        program: String,
+        /// What went wrong.
+        source: io::Error,
+    },
+}
+
+impl Error {
+    fn io(path: &Path, source: io::Error) -> Error {
+        Error::Io {
+            path: path.to_path_buf(),
+            source,
+        }
+    }
+}
+
+/// A path as the user would type it: relative to the current directory when inside it.
+pub fn relative(path: &Path) -> PathBuf {
+    std::env::current_dir()
+        .ok()
+        .and_then(|cwd| path.strip_prefix(cwd).ok().map(Path::to_path_buf))
+        .filter(|rel| !rel.as_os_str().is_empty())
+        .unwrap_or_else(|| path.to_path_buf())
+}
+
+/// [`relative`], for messages.
+pub fn shown(path: &Path) -> String {
+    relative(path).display().to_string()
+}
+
+/// clap's usage error on one line: `error: invalid value 'gif' for '--format <FORMAT>'; [possible values: svg, png, both]`.
+fn one_line(message: &str) -> String {
+    let mut line = String::new();
+    for part in message.lines().map(str::trim) {
+        if part.is_empty() || part.starts_with("Usage:") || part.starts_with("For more information")
+        {
+            continue;
+        }
+        if line.ends_with(':') {
+            line.push(' ');
+        } else if !line.is_empty() {
+            line.push_str("; ");
+        }
+        line.push_str(part);
+    }
+    line
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        // --help and --version print to stdout and succeed.
+        Err(error) if !error.use_stderr() => error.exit(),
+        Err(error) => {
+            eprintln!("{} (see raystep --help)", one_line(&error.to_string()));
+            return ExitCode::from(2);
+        }
+    };
+    let result = match cli.command {
+        Command::Figures {
+            chapter,
+            out,
+            format,
+            check,
+        } => figures::run(&figures::Options {
+            chapter,
+            out,
+            format: format.into(),
+            check,
+        }),
+        Command::Check {
+            chapter,
+            reference,
+            target_dir,
+            quiet,
+        } => check::run(&check::Options {
+            chapter,
+            reference,
+            target_dir: target_dir
+                .or_else(|| std::env::var_os("RAYSTEP_CHECK_TARGET_DIR").map(PathBuf::from)),
+            quiet,
+        }),
+    };
+    match result {
+        Ok(code) => code,
+        Err(error) => {
+            eprintln!("error: {error}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn usage_errors_fit_on_one_line() {
+        let error = Cli::try_parse_from(["raystep", "figures", "--format", "gif"]).unwrap_err();
+        assert_eq!(
+            one_line(&error.to_string()),
+            "error: invalid value 'gif' for '--format <FORMAT>'; [possible values: svg, png, both]"
+        );
+        let error = Cli::try_parse_from(["raystep", "check"]).unwrap_err();
+        assert_eq!(
+            one_line(&error.to_string()),
+            "error: the following required arguments were not provided: <CHAPTER>"
+        );
+    }
+
+    #[test]
+    fn the_command_line_is_consistent() {
+        use clap::CommandFactory;
+        Cli::command().debug_assert();
+    }
+}

@@ -1,0 +1,192 @@
+//! `raystep figures` from the outside: writing, checking, and its errors.
+
+use std::collections::BTreeMap;
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Runs the raystep binary with `args` and returns its output.
+fn raystep(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_raystep"))
+        .args(args)
+        .output()
+        .expect("raystep runs")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// A fresh, empty scratch folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("raystep-figures")
+        .join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Every file under `dir` with its bytes, by path relative to `dir`.
+fn files(dir: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
+    let mut found = BTreeMap::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for entry in fs::read_dir(&d).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+            } else {
+                found.insert(
+                    path.strip_prefix(dir).unwrap().to_path_buf(),
+                    fs::read(&path).unwrap(),
+                );
+            }
+        }
+    }
+    found
+}
+
+/// Writes every figure into a scratch folder; returns the folder.
+fn write_all(name: &str) -> PathBuf {
+    let dir = scratch(name);
+    let out = raystep(&["figures", "--out", dir.to_str().unwrap()]);
+    assert!(
+        out.status.success(),
+        "figures failed: {}",
+        text(&out.stderr)
+    );
+    dir
+}
+
+#[test]
+fn checking_an_empty_folder_reports_every_figure_missing() {
+    let expected = files(&write_all("reference")).len();
+    let empty = scratch("empty");
+    let out = raystep(&["figures", "--check", "--out", empty.to_str().unwrap()]);
+    let stdout = text(&out.stdout);
+    if expected == 0 {
+        // No chapter draws a figure yet: nothing can be missing.
+        assert!(out.status.success(), "{}", text(&out.stderr));
+        assert!(stdout.contains("figures up to date (0 files)"), "{stdout}");
+    } else {
+        assert!(
+            !out.status.success(),
+            "--check passed on an empty folder: {stdout}"
+        );
+        assert_eq!(
+            stdout
+                .lines()
+                .filter(|l| l.starts_with("missing: "))
+                .count(),
+            expected,
+            "{stdout}"
+        );
+        assert!(
+            text(&out.stderr).contains("out of date"),
+            "{}",
+            text(&out.stderr)
+        );
+    }
+    assert!(files(&empty).is_empty(), "--check wrote files");
+}
+
+#[test]
+fn written_figures_check_clean() {
+    let dir = write_all("clean");
+    let out = raystep(&["figures", "--check", "--out", dir.to_str().unwrap()]);
+    let stdout = text(&out.stdout);
+    assert!(out.status.success(), "{stdout}{}", text(&out.stderr));
+    let n = files(&dir).len();
+    assert!(
+        stdout.contains(&format!("figures up to date ({n} file")),
+        "{stdout}"
+    );
+}
+
+#[test]
+fn a_changed_or_extra_figure_file_is_named() {
+    let dir = write_all("tampered");
+    let chapter = dir.join("ch01");
+    fs::write(chapter.join("stray.svg"), "<svg/>").unwrap();
+    let first = files(&chapter)
+        .into_keys()
+        .find(|p| p.to_str() != Some("stray.svg"));
+    if let Some(first) = &first {
+        fs::write(chapter.join(first), b"changed").unwrap();
+    }
+    let out = raystep(&["figures", "--check", "--out", dir.to_str().unwrap()]);
+    let stdout = text(&out.stdout);
+    assert!(!out.status.success());
+    assert!(stdout.contains("stray.svg"), "{stdout}");
+    if let Some(first) = first {
+        assert!(stdout.contains(first.to_str().unwrap()), "{stdout}");
+    }
+}
+
+#[test]
+fn writing_twice_gives_identical_files() {
+    let dir = write_all("twice");
+    let before = files(&dir);
+    let out = raystep(&["figures", "--out", dir.to_str().unwrap()]);
+    assert!(out.status.success());
+    assert!(before == files(&dir), "the second run changed the figures");
+    // One line per file written, and a summary.
+    assert_eq!(text(&out.stdout).lines().count(), before.len() + 1);
+}
+
+#[test]
+fn one_chapter_only() {
+    let dir = scratch("one");
+    let out = raystep(&["figures", "--chapter", "1", "--out", dir.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let folders: Vec<_> = fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(folders, ["ch01"]);
+}
+
+#[test]
+fn an_unknown_chapter_is_one_clear_error() {
+    for args in [
+        &["figures", "--chapter", "ch99", "--check"][..],
+        &["figures", "--chapter", "99"],
+        &["check", "ch99"],
+    ] {
+        let out = raystep(args);
+        let stderr = text(&out.stderr);
+        assert!(!out.status.success(), "{args:?}");
+        assert_eq!(
+            stderr, "error: ch99: no such chapter; chapters are ch01, ch02\n",
+            "{args:?}"
+        );
+    }
+}
+
+#[test]
+fn an_unwritable_folder_is_one_clear_error() {
+    let dir = scratch("unwritable");
+    let file = dir.join("a-file");
+    fs::write(&file, "not a folder").unwrap();
+    let out = raystep(&["figures", "--out", file.join("figures").to_str().unwrap()]);
+    let stderr = text(&out.stderr);
+    assert!(!out.status.success());
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.starts_with("error: ") && stderr.contains("a-file"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}
+
+#[test]
+fn a_bad_format_is_refused() {
+    let dir = scratch("format");
+    let out = raystep(&["figures", "--format", "gif", "--out", dir.to_str().unwrap()]);
+    assert!(!out.status.success());
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains("invalid value 'gif'"), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(files(&dir).is_empty());
+}
