@@ -32,19 +32,6 @@ fn vector(color: raystep_figure::Color) -> Stroke {
     Stroke::new(color).width(2.5)
 }
 
-/// A small right-angle mark at `corner` between the unit directions `u` and `v`, `size` world
-/// units on a side.
-fn right_angle(page: &mut Page, corner: DVec2, u: DVec2, v: DVec2, size: f64) {
-    page.polyline(
-        &[
-            corner + size * u,
-            corner + size * (u + v),
-            corner + size * v,
-        ],
-        &Stroke::new(palette::BLACK).thin(),
-    );
-}
-
 /// The line through P₀ and P₁ with V, N and the sign of f shaded on both sides.
 fn line_sign() -> Figure {
     let line = Line2::through(LINE_P0, LINE_P1).expect("P₀ ≠ P₁ gives a line");
@@ -59,7 +46,7 @@ fn line_sign() -> Figure {
     page.axes(palette::GREY);
 
     page.line(LINE_P0, v, &ink().width(2.0));
-    right_angle(&mut page, LINE_P0, v, n, 0.2);
+    page.right_angle(LINE_P0, v, n, 0.2);
     page.arrow(LINE_P0, LINE_P0 + v, &vector(V_COLOR));
     page.arrow(LINE_P0, LINE_P0 + n, &vector(N_COLOR));
     page.label(LINE_P0 + v, "V", Anchor::SE);
@@ -70,7 +57,7 @@ fn line_sign() -> Figure {
     let fq = line.eval(q);
     let foot = q - fq * n;
     page.segment(q, foot, &Stroke::new(palette::BLACK).thin().dashed());
-    right_angle(&mut page, foot, -v, n, 0.15);
+    page.right_angle(foot, -v, n, 0.15);
     page.point(q, palette::BLACK);
     page.label(q, "Q", Anchor::NW);
     // centred in the grid cell left of the perpendicular's middle
@@ -110,14 +97,14 @@ fn rotation() -> Figure {
     let vx = DVec2::new(v.x, 0.0);
     page.segment(o, vx, &legs);
     page.segment(vx, v, &legs);
-    right_angle(&mut page, vx, -DVec2::X, DVec2::Y, mark);
+    page.right_angle(vx, -DVec2::X, DVec2::Y, mark);
     page.label(vx / 2.0, "v_x", Anchor::S);
     page.label((vx + v) / 2.0, "v_y", Anchor::E);
     // N's legs: n_x = −v_y along x, then n_y = v_x up.
     let nx = DVec2::new(n.x, 0.0);
     page.segment(o, nx, &legs);
     page.segment(nx, n, &legs);
-    right_angle(&mut page, nx, DVec2::X, DVec2::Y, mark);
+    page.right_angle(nx, DVec2::X, DVec2::Y, mark);
     page.label(nx / 2.0, "−v_y", Anchor::S);
     page.label((nx + n) / 2.0, "v_x", Anchor::W);
 

@@ -73,22 +73,6 @@ fn signed(x: f64) -> String {
     }
 }
 
-/// The anchor that puts a label on the side of its point that the world direction `dir`
-/// points to.
-fn anchor_toward(dir: DVec2) -> Anchor {
-    let octant = (dir.y.atan2(dir.x).to_degrees() + 360.0 + 22.5).rem_euclid(360.0) / 45.0;
-    [
-        Anchor::E,
-        Anchor::NE,
-        Anchor::N,
-        Anchor::NW,
-        Anchor::W,
-        Anchor::SW,
-        Anchor::S,
-        Anchor::SE,
-    ][octant as usize % 8]
-}
-
 /// A 3D point of the side view: z = 0.
 fn v3(p: DVec2) -> DVec3 {
     p.extend(0.0)
@@ -117,18 +101,6 @@ fn hollow_point(page: &mut Page, p: DVec2, color: Color) {
     );
 }
 
-/// A small right-angle mark at `corner` between the unit directions `u` and `v`.
-fn right_angle(page: &mut Page, corner: DVec2, u: DVec2, v: DVec2, size: f64) {
-    page.polyline(
-        &[
-            corner + size * u,
-            corner + size * (u + v),
-            corner + size * v,
-        ],
-        &Stroke::new(palette::BLACK).thin(),
-    );
-}
-
 /// A ray from P₀ along D meets a tilted plane at the t that `ray_plane` computes.
 fn ray_plane_figure() -> Figure {
     let (a, b) = (DVec2::new(5.0, -0.9), DVec2::new(6.2, 4.4));
@@ -151,7 +123,7 @@ fn ray_plane_figure() -> Figure {
     // N·P₀ + d: the distance of P₀ from the plane, measured along N
     let foot = p0 - distance * n;
     page.segment(p0, foot, &Stroke::new(palette::GREY).width(1.5).dashed());
-    right_angle(&mut page, foot, (b - a).normalize(), n, 0.18);
+    page.right_angle(foot, (b - a).normalize(), n, 0.18);
     page.label(
         p0 + 0.62 * (foot - p0),
         &format!("N·P_0 + d = {}", fmt(distance)),
@@ -334,7 +306,7 @@ fn inside_test() -> Figure {
         page.label_sized(
             a + along * (b - a) - 0.08 * inward,
             &format!("f_{}(Q) = {}", i + 1, signed(fq)),
-            anchor_toward(-inward),
+            Anchor::pointing(-inward),
             16.0,
             INSIDE_COLOR,
         );

@@ -59,6 +59,12 @@ impl Anchor {
             _ => Anchor::SE,
         }
     }
+
+    /// The anchor that puts a label on the side of its point that the world direction `dir`
+    /// (y up) points to: `Anchor::pointing(n)` labels a normal n beyond its tip.
+    pub fn pointing(dir: DVec2) -> Anchor {
+        Anchor::toward(DVec2::new(dir.x, -dir.y))
+    }
 }
 
 /// A figure's drawing surface, `width × height` page px on a white background.
@@ -237,6 +243,17 @@ impl Page {
             stroke.attributes()
         );
         self.push(&q, el);
+    }
+
+    /// A right-angle mark at `corner` between the unit directions `u` and `v`: a thin square
+    /// corner `size` world units on a side.
+    pub fn right_angle(&mut self, corner: DVec2, u: DVec2, v: DVec2, size: f64) {
+        let mark = [
+            corner + size * u,
+            corner + size * (u + v),
+            corner + size * v,
+        ];
+        self.polyline(&mark, &Stroke::new(palette::BLACK).thin());
     }
 
     /// The infinite line through `p` along `dir`, clipped to the visible world rectangle.
