@@ -2,13 +2,16 @@
 //!
 //! Snapshots hold rounded numbers so that a correct student solution that
 //! computes in another order (and so rounds differently in the last bits)
-//! still matches the reference's snapshot.
+//! still matches the reference's snapshot. For the same reason rendered
+//! images are compared with a [`Tolerance`] by [`assert_image_matches`].
 #![deny(missing_docs)]
 
+mod image_compare;
 mod round;
 mod seeded;
 mod table;
 
+pub use image_compare::{Tolerance, assert_image_matches, diff_dir};
 pub use round::{num, num_places, vec2, vec3};
 pub use seeded::seeded;
 pub use table::Table;
