@@ -13,8 +13,11 @@ pub type ChapterFigures = (&'static str, fn() -> Vec<Figure>);
 /// Every chapter's figures, in lecture order: the one place that names the
 /// chapter crates. A new chapter adds its line here (and its dependency in
 /// `crates/raystep/Cargo.toml`).
-pub const CHAPTERS: &[ChapterFigures] =
-    &[("ch01", ch01::figures::all), ("ch02", ch02::figures::all)];
+pub const CHAPTERS: &[ChapterFigures] = &[
+    ("ch01", ch01::figures::all),
+    ("ch02", ch02::figures::all),
+    ("ch03", ch03::figures::all),
+];
 
 /// What `raystep figures` was asked to do.
 #[derive(Debug)]

@@ -2,11 +2,13 @@
 //!
 //! * `raystep figures` draws every lecture figure into `book/src/figures/`
 //!   (`--check` compares instead of writing);
+//! * `raystep render SCENE.toml` renders a scene file to a PNG;
 //! * `raystep check ch01` runs a chapter's tests in student mode and says,
 //!   exercise by exercise, what passes.
 
 mod check;
 mod figures;
+mod render;
 mod workspace;
 
 use std::io;
@@ -39,6 +41,24 @@ enum Command {
         /// Write nothing; fail and name every figure file that differs, is missing or is extra.
         #[arg(long)]
         check: bool,
+    },
+    /// Render a scene file (TOML) to a PNG.
+    Render {
+        /// The scene file, e.g. chapters/ch03-illumination/scenes/spheres.toml.
+        scene: PathBuf,
+        /// The PNG to write [default: <scene name>.png in the current folder].
+        #[arg(long, value_name = "FILE.png")]
+        out: Option<PathBuf>,
+        /// Image size, overriding the scene's, e.g. 640x360.
+        #[arg(long, value_name = "WxH")]
+        size: Option<String>,
+        /// Worker threads [default: one per core]; the image is the same for any number.
+        #[arg(long, value_name = "N")]
+        threads: Option<usize>,
+        /// Render with this chapter's tracer [default: the chapter folder holding the scene,
+        /// else the latest].
+        #[arg(long, value_name = "CHAPTER")]
+        chapter: Option<String>,
     },
     /// Run a chapter's tests in student mode and report each exercise.
     Check {
@@ -96,6 +116,9 @@ pub enum Error {
     /// The figure kit failed (its message names the path).
     #[error(transparent)]
     Figure(#[from] raystep_figure::FigureError),
+    /// A bad argument or input file; the message names it.
+    #[error("{0}")]
+    Usage(String),
     /// `cargo` could not be started.
     #[error("cannot run `{program}`: {source}")]
     Spawn {
@@ -168,6 +191,19 @@ fn main() -> ExitCode {
             out,
             format: format.into(),
             check,
+        }),
+        Command::Render {
+            scene,
+            out,
+            size,
+            threads,
+            chapter,
+        } => render::run(&render::Options {
+            scene,
+            out,
+            size,
+            threads,
+            chapter,
         }),
         Command::Check {
             chapter,

@@ -1,1 +1,581 @@
-//! placeholder
+//! Scene files for chapters 03–06 of the raystep lecture: read, checked, and
+//! handed over as plain data.
+//!
+//! A scene is a TOML file. [`load`] (or [`parse`], for a string) reads it
+//! into a [`Scene`]: image size, [`CameraSpec`], ambient light, point
+//! [`Light`]s, named [`Material`]s and [`Object`]s whose [`Shape`] is a
+//! sphere, a plane or a polygon. This crate checks the data but knows no
+//! geometry: the chapters build their own spheres, planes and polygons from
+//! it.
+//!
+//! # The format
+//!
+//! A scene states only what it uses. Only `[camera]` with `look_from` and
+//! `look_at` is required; every other field has the default noted below.
+//! This example uses every field:
+//!
+#![doc = concat!("```toml\n", include_str!("example.toml"), "```")]
+//!
+//! * Numbers may be written as TOML integers or floats (`1` or `1.0`), but
+//!   must be finite: TOML's `inf` and `nan` are rejected everywhere.
+//! * A point or direction is `[x, y, z]`.
+//! * A colour (`intensity`, `ka`, `kd`, `ks`, `kr`, `kt`) is one number for
+//!   grey or `[r, g, b]`; no component may be negative (none is capped at 1).
+//! * `ior` is a positive number or a name from [`REFRACTIVE_INDICES`].
+//! * Each `[[objects]]` entry has exactly one shape key, `sphere`, `plane`
+//!   or `polygon`, whose value is a table (inline as above, or as an
+//!   `[objects.sphere]` sub-table), plus an optional `material`. We chose
+//!   shape keys over `type = "sphere"` because a serde tagged enum cannot
+//!   reject unknown fields reliably; three optional keys can, and the
+//!   "exactly one shape" rule gets an error worded for it.
+//! * The materials list always starts with the one named `"default"` (0.7
+//!   grey, diffuse only, unless the file defines `[materials.default]`),
+//!   followed by the file's other materials in the order they appear.
+//!   Objects without `material` use it.
+//! * Any key not listed here is an error, so typos do not pass silently.
+//!
+//! # Errors
+//!
+//! Every bad file gives one [`SceneError`] whose `Display` is one line:
+//! `FILE:LINE:COLUMN: FIELD: what is wrong`, for example
+//!
+//! ```text
+//! scenes/bad.toml:14:10: objects[2].sphere.radius: must be positive, got -1
+//! ```
+//!
+//! `FIELD` is the dotted path to the value (array entries count from 0),
+//! the line and column those of the value, or of its table if the value is
+//! missing. Nothing in this crate panics on any input.
+//!
+//! ```
+//! let error = raystep_scene::parse("[camera]\nlook_from = [0, 0, 5]\n", "a.toml").unwrap_err();
+//! assert_eq!(error.to_string(), "a.toml:1:1: camera.look_at: required, but missing");
+//! ```
+#![deny(missing_docs)]
+
+mod error;
+mod raw;
+
+use std::ops::Range;
+use std::path::Path;
+
+use raystep_core::{Camera, DVec3};
+use serde::Deserialize;
+use toml::Spanned;
+use toml::de::DeTable;
+
+use error::Context;
+pub use error::SceneError;
+use raw::{RawMaterial, RawObject, RawScene, Table};
+
+/// The largest image width or height a scene may ask for, in pixels.
+pub const MAX_SIZE: u32 = 4096;
+/// The image width when `[image]` does not give one.
+pub const DEFAULT_WIDTH: u32 = 320;
+/// The image height when `[image]` does not give one.
+pub const DEFAULT_HEIGHT: u32 = 180;
+/// The vertical field of view, in degrees, when `[camera]` does not give one.
+pub const DEFAULT_VFOV: f64 = 40.0;
+/// The ambient intensity `Ia` (grey) when `[ambient]` does not give one.
+pub const DEFAULT_AMBIENT: f64 = 0.1;
+/// The name of the material that objects without `material` use.
+pub const DEFAULT_MATERIAL: &str = "default";
+
+/// The lecture's table of refractive indices, usable by name as `ior`.
+pub const REFRACTIVE_INDICES: [(&str, f64); 7] = [
+    ("vacuum", 1.0),
+    ("air", 1.0003),
+    ("water", 1.33),
+    ("glass", 1.5),
+    ("ice", 1.309),
+    ("quartz", 1.544),
+    ("diamond", 2.417),
+];
+
+/// The index of refraction of a material in [`REFRACTIVE_INDICES`], by
+/// name (ASCII case does not matter).
+///
+/// ```
+/// assert_eq!(raystep_scene::index_of_refraction("water"), Some(1.33));
+/// assert_eq!(raystep_scene::index_of_refraction("Glass"), Some(1.5));
+/// assert_eq!(raystep_scene::index_of_refraction("jelly"), None);
+/// ```
+pub fn index_of_refraction(name: &str) -> Option<f64> {
+    REFRACTIVE_INDICES
+        .iter()
+        .find(|(n, _)| n.eq_ignore_ascii_case(name))
+        .map(|&(_, ior)| ior)
+}
+
+/// A checked scene: everything a chapter needs to render it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    /// Image width in pixels, `1 ..= MAX_SIZE`.
+    pub width: u32,
+    /// Image height in pixels, `1 ..= MAX_SIZE`.
+    pub height: u32,
+    /// Where the camera is and where it looks.
+    pub camera: CameraSpec,
+    /// The ambient intensity `Ia`, each component `≥ 0`.
+    pub ambient: DVec3,
+    /// The point lights, in file order.
+    pub lights: Vec<Light>,
+    /// The materials: `materials[0]` is always the one named `"default"`,
+    /// the others follow in file order.
+    pub materials: Vec<Material>,
+    /// The objects, in file order.
+    pub objects: Vec<Object>,
+}
+
+impl Scene {
+    /// The camera for this scene's image size.
+    pub fn camera(&self) -> Camera {
+        self.camera
+            .camera(f64::from(self.width) / f64::from(self.height))
+    }
+
+    /// The material of `object`.
+    pub fn material(&self, object: &Object) -> &Material {
+        &self.materials[object.material]
+    }
+}
+
+/// The `[camera]` table, checked: `look_from ≠ look_at`, `up` not parallel
+/// to the view direction, `0 < vfov < 180`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CameraSpec {
+    /// The eye.
+    pub look_from: DVec3,
+    /// The point in the centre of the picture.
+    pub look_at: DVec3,
+    /// Which way is up in the picture (not necessarily perpendicular to the
+    /// view direction, nor a unit vector).
+    pub up: DVec3,
+    /// Vertical field of view in degrees.
+    pub vfov: f64,
+}
+
+impl CameraSpec {
+    /// The camera for a picture `aspect` (width / height) wide.
+    pub fn camera(&self, aspect: f64) -> Camera {
+        Camera::look_at(self.look_from, self.look_at, self.up, self.vfov, aspect)
+    }
+}
+
+/// A point light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Light {
+    /// Where it is.
+    pub position: DVec3,
+    /// Its intensity `Ip` per colour channel, each `≥ 0`.
+    pub intensity: DVec3,
+}
+
+/// A named material: the Phong coefficients, plus reflection and refraction
+/// for chapters 05 and 06. Every colour component is `≥ 0`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Material {
+    /// Its name in the file (the key after `materials.`).
+    pub name: String,
+    /// Ambient reflectance `ka`.
+    pub ka: DVec3,
+    /// Diffuse reflectance `kd`.
+    pub kd: DVec3,
+    /// Specular reflectance `ks`.
+    pub ks: DVec3,
+    /// Phong exponent, `> 0`.
+    pub p: f64,
+    /// Reflected fraction `kr` (chapter 05).
+    pub kr: DVec3,
+    /// Transmitted fraction `kt` (chapter 06).
+    pub kt: DVec3,
+    /// Index of refraction, `> 0` (chapter 06).
+    pub ior: f64,
+}
+
+impl Default for Material {
+    /// The built-in `"default"` material: 0.7 grey, diffuse only
+    /// (`ka = kd = 0.7`, `ks = kr = kt = 0`, `p = 32`, `ior = 1`).
+    fn default() -> Material {
+        Material {
+            name: DEFAULT_MATERIAL.to_owned(),
+            ka: DVec3::splat(0.7),
+            kd: DVec3::splat(0.7),
+            ks: DVec3::ZERO,
+            p: 32.0,
+            kr: DVec3::ZERO,
+            kt: DVec3::ZERO,
+            ior: 1.0,
+        }
+    }
+}
+
+/// One `[[objects]]` entry.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Object {
+    /// Its shape.
+    pub shape: Shape,
+    /// Index of its material in [`Scene::materials`].
+    pub material: usize,
+    /// The 1-based line of the entry (its `[[objects]]` header), for
+    /// errors found later.
+    pub line: usize,
+}
+
+/// An object's shape, its numbers checked (not its geometry).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Shape {
+    /// A sphere.
+    Sphere {
+        /// Its centre.
+        center: DVec3,
+        /// Its radius, `> 0`.
+        radius: f64,
+    },
+    /// An infinite plane.
+    Plane {
+        /// A point on it.
+        point: DVec3,
+        /// Its normal, normalised to a unit vector.
+        normal: DVec3,
+    },
+    /// A planar polygon. Only the count is checked: that the vertices lie in
+    /// one plane and do not all lie on one line is the chapter's business.
+    Polygon {
+        /// Its corners in order around its edge, at least 3.
+        vertices: Vec<DVec3>,
+    },
+}
+
+/// Reads and checks the scene file at `path`. Errors name the file as
+/// `path` shows it.
+pub fn load(path: &Path) -> Result<Scene, SceneError> {
+    let source = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
+        path: path.to_owned(),
+        source,
+    })?;
+    parse(&source, &path.display().to_string())
+}
+
+/// Reads and checks a scene from `source`; `file_name` is only used in
+/// error messages.
+pub fn parse(source: &str, file_name: &str) -> Result<Scene, SceneError> {
+    let document = DeTable::parse(source).map_err(|e| {
+        let span = e.span().unwrap_or(0..0);
+        let (line, column) = error::line_column(source, span.start);
+        let mut message = e.message().to_owned();
+        if message == "duplicate key" {
+            if let Some(key) = source.get(span) {
+                message = format!("duplicate key `{key}`");
+            }
+        }
+        SceneError::Syntax {
+            file: file_name.to_owned(),
+            line,
+            column,
+            message,
+        }
+    })?;
+    let context = Context::new(source, file_name, &document);
+    let raw = RawScene::deserialize(toml::Deserializer::from(document))
+        .map_err(|e| context.serde_error(&e))?;
+    build(raw, &context)
+}
+
+/// `v` as the error messages show numbers: `-1`, `0.5`, `inf`, `nan`.
+pub(crate) fn format_number(v: f64) -> String {
+    if v.is_nan() {
+        "nan".to_owned()
+    } else if v != 0.0 && v.is_finite() && !(1e-6..1e16).contains(&v.abs()) {
+        format!("{v:e}")
+    } else {
+        v.to_string()
+    }
+}
+
+fn format_vec(v: DVec3) -> String {
+    format!(
+        "[{}, {}, {}]",
+        format_number(v.x),
+        format_number(v.y),
+        format_number(v.z)
+    )
+}
+
+/// The checks that compare a field with a limit or with other fields.
+fn build(raw: RawScene, cx: &Context) -> Result<Scene, SceneError> {
+    let size = |value: Option<Spanned<i64>>, default: u32| match value {
+        None => Ok(default),
+        Some(v) => match u32::try_from(*v.get_ref()) {
+            Ok(n) if (1..=MAX_SIZE).contains(&n) => Ok(n),
+            _ => Err(cx.error(
+                v.span(),
+                format!(
+                    "must be between 1 and {MAX_SIZE} (MAX_SIZE), got {}",
+                    v.get_ref()
+                ),
+            )),
+        },
+    };
+    let (width, height) = match raw.image {
+        None => (DEFAULT_WIDTH, DEFAULT_HEIGHT),
+        Some(Table(image)) => (
+            size(image.width, DEFAULT_WIDTH)?,
+            size(image.height, DEFAULT_HEIGHT)?,
+        ),
+    };
+
+    let camera = camera(raw.camera, cx)?;
+    let ambient = raw
+        .ambient
+        .and_then(|Table(a)| a.intensity)
+        .map_or(DVec3::splat(DEFAULT_AMBIENT), |c| c.0);
+    let lights = raw
+        .lights
+        .into_iter()
+        .map(|Table(light)| Light {
+            position: light.position.0,
+            intensity: light.intensity.map_or(DVec3::ONE, |c| c.0),
+        })
+        .collect();
+
+    let mut materials = vec![Material::default()];
+    let mut defined: Vec<_> = raw.materials.into_iter().collect();
+    defined.sort_by_key(|(_, m)| m.span().start);
+    for (name, m) in defined {
+        let material = material(name, m, cx)?;
+        if material.name == DEFAULT_MATERIAL {
+            materials[0] = material;
+        } else {
+            materials.push(material);
+        }
+    }
+
+    let objects = raw
+        .objects
+        .into_iter()
+        .map(|o| object(o, &materials, cx))
+        .collect::<Result<_, _>>()?;
+
+    Ok(Scene {
+        width,
+        height,
+        camera,
+        ambient,
+        lights,
+        materials,
+        objects,
+    })
+}
+
+fn camera(raw: Spanned<Table<raw::RawCamera>>, cx: &Context) -> Result<CameraSpec, SceneError> {
+    let table_span = raw.span();
+    let Table(c) = raw.into_inner();
+    let look_from = c.look_from.0;
+    let look_at = c.look_at.get_ref().0;
+    let vfov = match c.vfov {
+        None => DEFAULT_VFOV,
+        Some(v) if v.get_ref().0 > 0.0 && v.get_ref().0 < 180.0 => v.get_ref().0,
+        Some(v) => {
+            return Err(cx.error(
+                v.span(),
+                format!(
+                    "must be between 0 and 180 degrees (both excluded), got {}",
+                    format_number(v.get_ref().0)
+                ),
+            ));
+        }
+    };
+    // These checks mirror what `Camera::look_at` computes, so that the
+    // camera a chapter builds from a checked scene has unit vectors.
+    if look_at == look_from {
+        return Err(cx.error(
+            c.look_at.span(),
+            format!(
+                "must differ from look_from, both are {}",
+                format_vec(look_from)
+            ),
+        ));
+    }
+    let view = look_at - look_from;
+    let forward = view.normalize();
+    if !forward.is_normalized() {
+        return Err(cx.error(
+            c.look_at.span(),
+            format!(
+                "too close to or too far from look_from to give a view direction \
+                 (look_at - look_from = {})",
+                format_vec(view)
+            ),
+        ));
+    }
+    let up = match &c.up {
+        Some(up) => up.get_ref().0,
+        None => DVec3::Y,
+    };
+    let problem = if up == DVec3::ZERO {
+        Some("must not be zero-length".to_owned())
+    } else if !up.normalize().is_normalized() {
+        Some("is too short or too long to give a direction".to_owned())
+    } else if forward.cross(up.normalize()).length() < 1e-9 {
+        Some(format!(
+            "must not be parallel to the view direction (look_at - look_from = {})",
+            format_vec(view)
+        ))
+    } else if !forward.cross(up).normalize().is_normalized() {
+        Some("is too short or too long to give a direction".to_owned())
+    } else {
+        None
+    };
+    if let Some(problem) = problem {
+        return Err(match &c.up {
+            Some(up) => cx.error(
+                up.span(),
+                format!("{problem}, got {}", format_vec(up.get_ref().0)),
+            ),
+            None => cx.error_in(
+                table_span.clone(),
+                cx.child(&table_span, "up"),
+                format!(
+                    "the default [0, 1, 0] is parallel to the view direction \
+                     (look_at - look_from = {}); give another `up`",
+                    format_vec(view)
+                ),
+            ),
+        });
+    }
+    Ok(CameraSpec {
+        look_from,
+        look_at,
+        up,
+        vfov,
+    })
+}
+
+fn material(
+    name: String,
+    raw: Spanned<Table<RawMaterial>>,
+    cx: &Context,
+) -> Result<Material, SceneError> {
+    let Table(m) = raw.into_inner();
+    let kd = m.kd.map_or(DVec3::splat(0.7), |c| c.0);
+    let p = match m.p {
+        None => 32.0,
+        Some(p) if p.get_ref().0 > 0.0 => p.get_ref().0,
+        Some(p) => {
+            return Err(cx.error(
+                p.span(),
+                format!("must be positive, got {}", format_number(p.get_ref().0)),
+            ));
+        }
+    };
+    Ok(Material {
+        name,
+        ka: m.ka.map_or(kd, |c| c.0),
+        kd,
+        ks: m.ks.map_or(DVec3::ZERO, |c| c.0),
+        p,
+        kr: m.kr.map_or(DVec3::ZERO, |c| c.0),
+        kt: m.kt.map_or(DVec3::ZERO, |c| c.0),
+        ior: m.ior.map_or(1.0, |i| i.0),
+    })
+}
+
+fn object(
+    raw: Spanned<Table<RawObject>>,
+    materials: &[Material],
+    cx: &Context,
+) -> Result<Object, SceneError> {
+    let span = raw.span();
+    let Table(o) = raw.into_inner();
+    let line = cx.line_column(span.start).0;
+
+    let shape = match (o.sphere, o.plane, o.polygon) {
+        (Some(s), None, None) => {
+            let Table(s) = s.into_inner();
+            let radius = s.radius.get_ref().0;
+            if radius <= 0.0 {
+                return Err(cx.error(
+                    s.radius.span(),
+                    format!("must be positive, got {}", format_number(radius)),
+                ));
+            }
+            Shape::Sphere {
+                center: s.center.0,
+                radius,
+            }
+        }
+        (None, Some(p), None) => {
+            let Table(p) = p.into_inner();
+            let n = p.normal.get_ref().0;
+            // Scaled first, so that a normal like [0, 1e-200, 0] still has
+            // a direction.
+            let Some(normal) = (n / n.abs().max_element()).try_normalize() else {
+                return Err(cx.error(
+                    p.normal.span(),
+                    format!("must have a non-zero length, got {}", format_vec(n)),
+                ));
+            };
+            Shape::Plane {
+                point: p.point.0,
+                normal,
+            }
+        }
+        (None, None, Some(p)) => {
+            let Table(p) = p.into_inner();
+            let count = p.vertices.get_ref().len();
+            if count < 3 {
+                return Err(cx.error(
+                    p.vertices.span(),
+                    format!("a polygon needs at least 3 vertices, got {count}"),
+                ));
+            }
+            Shape::Polygon {
+                vertices: p.vertices.into_inner().into_iter().map(|v| v.0).collect(),
+            }
+        }
+        (sphere, plane, polygon) => {
+            // None, or several: blame the second shape key in the file.
+            let mut keys: Vec<(&str, Range<usize>)> = [
+                ("sphere", sphere.map(|s| s.span())),
+                ("plane", plane.map(|s| s.span())),
+                ("polygon", polygon.map(|s| s.span())),
+            ]
+            .into_iter()
+            .filter_map(|(name, span)| Some((name, span?)))
+            .collect();
+            keys.sort_by_key(|(_, span)| span.start);
+            return Err(match &keys[..] {
+                [(first, _), (_, second), ..] => cx.error(
+                    second.clone(),
+                    format!("an object has exactly one shape, this one already has `{first}`"),
+                ),
+                _ => cx.error(span, "needs a shape: one of `sphere`, `plane` or `polygon`"),
+            });
+        }
+    };
+
+    let material = match &o.material {
+        None => 0,
+        Some(name) => materials
+            .iter()
+            .position(|m| m.name == *name.get_ref())
+            .ok_or_else(|| {
+                let defined: Vec<&str> = materials.iter().map(|m| m.name.as_str()).collect();
+                cx.error(
+                    name.span(),
+                    format!(
+                        "unknown material {:?}, defined: {}",
+                        name.get_ref(),
+                        defined.join(", ")
+                    ),
+                )
+            })?,
+    };
+
+    Ok(Object {
+        shape,
+        material,
+        line,
+    })
+}

@@ -1,0 +1,37 @@
+//! # Chapter 03 — illumination
+//!
+//! The lecture's ray tracer in its first form: for each pixel shoot a ray,
+//! for each object ask whether the ray hits it, keep the closest hit, and
+//! shade that point with the local model
+//!
+//! L = ka·Ia + Σᵢ Sᵢ·Iᵢ·[kd·(N·Lᵢ) + ks·(Rᵢ·V)^p] (+ kr·Lr + kt·Lt later).
+//!
+//! Student mode: with the feature `exercise` the modules marked below are
+//! replaced by the stubs in `exercise/`.
+
+mod shading;
+mod sphere;
+mod trace;
+mod world;
+
+// Exercise 1: where a ray meets a sphere.
+#[cfg_attr(feature = "exercise", path = "../exercise/sphere_hit.rs")]
+mod sphere_hit;
+// Exercise 2: the reflection Rᵢ of the light direction.
+#[cfg_attr(feature = "exercise", path = "../exercise/reflect.rs")]
+mod reflect;
+// Exercise 3: the local illumination sum.
+#[cfg_attr(feature = "exercise", path = "../exercise/local_shading.rs")]
+mod local_shading;
+
+pub mod figures;
+
+pub use local_shading::shading_terms;
+pub use raystep_core::{Camera, DVec3, Hit, Interval, Ray};
+pub use raystep_render::{Image, RenderOptions};
+pub use raystep_scene::{Light, Material, Scene};
+pub use reflect::reflect;
+pub use shading::{LightSample, ShadingTerms};
+pub use sphere::Sphere;
+pub use trace::{Terms, render, render_with, shade, shade_with, trace};
+pub use world::{Object, Shape, World, WorldError};

@@ -1,0 +1,92 @@
+//! Exercise 3: the local illumination model.
+use ch03::{DVec3, LightSample, Material, shading_terms};
+use proptest::prelude::*;
+use raystep_check::{Table, seeded, vec3};
+
+fn v(x: f64, y: f64, z: f64) -> DVec3 {
+    DVec3::new(x, y, z)
+}
+
+fn material(kd: f64, ks: f64, p: f64) -> Material {
+    Material {
+        name: "test".to_string(),
+        ka: v(0.2, 0.1, 0.1),
+        kd: v(kd, kd * 0.5, kd * 0.25),
+        ks: DVec3::splat(ks),
+        p,
+        kr: DVec3::ZERO,
+        kt: DVec3::ZERO,
+        ior: 1.0,
+    }
+}
+
+fn light(direction: DVec3, intensity: f64) -> LightSample {
+    LightSample {
+        direction: direction.normalize(),
+        intensity: DVec3::splat(intensity),
+        visibility: 1.0,
+    }
+}
+
+/// Each term on its own, for lights overhead, at 60°, behind the surface,
+/// in shadow, and a highlight seen straight on and off to the side.
+#[test]
+fn shading_table() {
+    let n = v(0.0, 1.0, 0.0);
+    let eye_above = v(0.0, 1.0, 0.0);
+    let eye_side = v(1.0, 1.0, 0.0).normalize();
+    let ambient = DVec3::splat(0.5);
+    let m = material(0.8, 0.4, 10.0);
+    #[rustfmt::skip]
+    let cases = [
+        ("no lights", eye_above, vec![]),
+        ("overhead", eye_above, vec![light(v(0.0, 1.0, 0.0), 1.0)]),
+        ("60° incidence", eye_above, vec![light(v(3f64.sqrt(), 1.0, 0.0), 1.0)]),
+        ("behind surface", eye_above, vec![light(v(0.0, -1.0, 0.0), 1.0)]),
+        ("in shadow (S=0)", eye_above, vec![LightSample { visibility: 0.0, ..light(v(0.0, 1.0, 0.0), 1.0) }]),
+        ("highlight off-axis", eye_side, vec![light(v(-1.0, 1.0, 0.0), 1.0)]),
+        ("two lights", eye_above, vec![light(v(0.0, 1.0, 0.0), 0.5), light(v(1.0, 1.0, 0.0), 2.0)]),
+    ];
+    let mut table = Table::new(&["case", "ambient", "diffuse", "specular", "L"]);
+    for (name, eye, lights) in cases {
+        let t = shading_terms(&m, n, eye, ambient, &lights);
+        table.row(&[
+            name.to_string(),
+            vec3(t.ambient),
+            vec3(t.diffuse),
+            vec3(t.specular),
+            vec3(t.sum()),
+        ]);
+    }
+    insta::assert_snapshot!(table.to_string());
+}
+
+fn unit() -> impl Strategy<Value = DVec3> {
+    (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64)
+        .prop_filter("not too short", |(x, y, z)| x * x + y * y + z * z > 0.01)
+        .prop_map(|(x, y, z)| v(x, y, z).normalize())
+}
+
+proptest! {
+    #![proptest_config(seeded(256))]
+
+    /// Light is never negative, and the diffuse term grows with kd·(N·L):
+    /// turning the light toward the normal, or raising kd, never darkens.
+    #[test]
+    fn non_negative_and_monotone_in_kd_n_dot_l(
+        n in unit(), l in unit(), eye in unit(), kd in 0.0..1.0f64, ks in 0.0..1.0f64, p in 1.0..100.0f64
+    ) {
+        let m = material(kd, ks, p);
+        let t = shading_terms(&m, n, eye, DVec3::splat(0.2), &[light(l, 1.0)]);
+        prop_assert!(t.ambient.min_element() >= 0.0);
+        prop_assert!(t.diffuse.min_element() >= 0.0);
+        prop_assert!(t.specular.min_element() >= 0.0);
+        // a light halfway toward the normal: N·L at least as large
+        let closer = (l + n).normalize();
+        let t_closer = shading_terms(&m, n, eye, DVec3::ZERO, &[light(closer, 1.0)]);
+        prop_assert!(t_closer.diffuse.x >= t.diffuse.x - 1e-12);
+        // more kd, more diffuse
+        let brighter = shading_terms(&material((kd + 0.1).min(1.0), ks, p), n, eye, DVec3::ZERO, &[light(l, 1.0)]);
+        prop_assert!(brighter.diffuse.x >= t.diffuse.x);
+    }
+}

@@ -1,0 +1,137 @@
+//! Exercise 1: where a ray meets a sphere.
+use ch03::{DVec3, Interval, Ray, Sphere};
+use proptest::prelude::*;
+use raystep_check::{Table, num, seeded, vec3};
+
+fn v(x: f64, y: f64, z: f64) -> DVec3 {
+    DVec3::new(x, y, z)
+}
+
+/// The cases of the quadratic: two roots in front, origin inside, a miss,
+/// the sphere behind, the near root cut off by the interval.
+#[test]
+fn sphere_hit_table() {
+    let unit = Sphere::new(v(0.0, 0.0, -5.0), 1.0);
+    #[rustfmt::skip]
+    let cases = [
+        ("straight at it", v(0.0, 0.0, 0.0), v(0.0, 0.0, -1.0), Interval::FORWARD),
+        ("off-centre", v(0.6, 0.0, 0.0), v(0.0, 0.0, -1.0), Interval::FORWARD),
+        ("unnormalised D", v(0.0, 0.0, 0.0), v(0.0, 0.0, -2.0), Interval::FORWARD),
+        ("oblique", v(0.0, 3.0, 0.0), v(0.0, -0.6, -0.8), Interval::FORWARD),
+        ("from inside", v(0.0, 0.0, -5.0), v(1.0, 0.0, 0.0), Interval::FORWARD),
+        ("miss", v(1.5, 0.0, 0.0), v(0.0, 0.0, -1.0), Interval::FORWARD),
+        ("sphere behind", v(0.0, 0.0, 0.0), v(0.0, 0.0, 1.0), Interval::FORWARD),
+        ("near root cut off", v(0.0, 0.0, 0.0), v(0.0, 0.0, -1.0), Interval::new(4.5, 100.0)),
+        ("both cut off", v(0.0, 0.0, 0.0), v(0.0, 0.0, -1.0), Interval::new(0.0, 3.0)),
+    ];
+    let mut table = Table::new(&["case", "P0", "D", "t", "point", "normal"]);
+    for (name, origin, direction, interval) in cases {
+        let row = match unit.intersect(&Ray::new(origin, direction), interval) {
+            Some(hit) => [num(hit.t), vec3(hit.point), vec3(hit.normal)],
+            None => ["none".to_string(), "-".to_string(), "-".to_string()],
+        };
+        table.row(&[
+            name.to_string(),
+            vec3(origin),
+            vec3(direction),
+            row[0].clone(),
+            row[1].clone(),
+            row[2].clone(),
+        ]);
+    }
+    insta::assert_snapshot!(table.to_string());
+}
+
+fn unit_vector() -> impl Strategy<Value = DVec3> {
+    (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64)
+        .prop_filter("not too short", |(x, y, z)| x * x + y * y + z * z > 0.01)
+        .prop_map(|(x, y, z)| v(x, y, z).normalize())
+}
+
+proptest! {
+    #![proptest_config(seeded(256))]
+
+    /// Every hit lies on the sphere, inside the interval, with a unit
+    /// outward normal; a ray aimed at the centre from outside always hits,
+    /// at t = |P0 − C| − r.
+    #[test]
+    fn hits_lie_on_the_sphere(
+        cx in -10.0..10.0f64, cy in -10.0..10.0f64, cz in -10.0..10.0f64, r in 0.1..5.0f64,
+        dir in unit_vector(), away in 0.0..20.0f64, aim in unit_vector(),
+    ) {
+        let sphere = Sphere::new(v(cx, cy, cz), r);
+        let origin = sphere.center + (r + away) * dir;
+        // aimed at the centre
+        let hit = sphere.intersect(&Ray::new(origin, -dir), Interval::FORWARD).unwrap();
+        prop_assert!((hit.t - away).abs() <= 1e-9 * (r + away));
+        // any direction
+        if let Some(hit) = sphere.intersect(&Ray::new(origin, aim), Interval::FORWARD) {
+            prop_assert!(hit.t >= 0.0);
+            prop_assert!(((hit.point - sphere.center).length() - r).abs() <= 1e-9 * (r + away));
+            prop_assert!((hit.normal.length() - 1.0).abs() <= 1e-9);
+            prop_assert!(hit.normal.dot(hit.point - sphere.center) > 0.0);
+        }
+    }
+}
+
+/// Grazing rays: a ray passing the centre at distance r·(1 − 10⁻ᵏ) hits,
+/// one at r·(1 + 10⁻ᵏ) misses, for k = 1 … 10, at three scales and eight
+/// directions. Failures counted: 0.
+#[test]
+fn grazing_rays() {
+    let (mut checked, mut failures) = (0, 0);
+    for scale in [1e-3, 1.0, 1e3] {
+        let sphere = Sphere::new(v(0.3, -0.2, 0.1) * scale, 1.5 * scale);
+        for azimuth in 0..8 {
+            let phi = f64::from(azimuth) * std::f64::consts::TAU / 8.0;
+            let side = v(phi.cos(), phi.sin(), 0.0);
+            for k in 1..=10 {
+                let eps = 10f64.powi(-k);
+                for (offset, should_hit) in [(1.0 - eps, true), (1.0 + eps, false)] {
+                    let origin =
+                        sphere.center + side * sphere.radius * offset + v(0.0, 0.0, 10.0 * scale);
+                    let hit =
+                        sphere.intersect(&Ray::new(origin, v(0.0, 0.0, -1.0)), Interval::FORWARD);
+                    checked += 1;
+                    if hit.is_some() != should_hit {
+                        failures += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(checked, 3 * 8 * 10 * 2);
+    assert_eq!(failures, 0);
+}
+
+/// A unit sphere 1e7 from the origin and a 1e-6 sphere 3.7e-5 from it,
+/// each hit by a grid of rays from the origin: every hit point must lie on the sphere
+/// within 1e-6 of its radius. The textbook discriminant b² − a·c misses
+/// this by far at 1e7 (it cancels two numbers near 1e14). Failures: 0.
+#[test]
+fn far_and_tiny_spheres() {
+    let (mut hits, mut failures) = (0, 0);
+    for (center, radius) in [(v(1e7, 2e6, -3e6), 1.0), (v(2e-5, -1e-5, 3e-5), 1e-6)] {
+        let sphere = Sphere::new(center, radius);
+        let dist = center.length();
+        let to_center = center / dist;
+        let u = to_center.any_orthonormal_vector();
+        let w = to_center.cross(u);
+        for i in -10..=10 {
+            for j in -10..=10 {
+                let target = center + 0.095 * radius * (f64::from(i) * u + f64::from(j) * w);
+                let ray = Ray::new(DVec3::ZERO, (target - DVec3::ZERO).normalize());
+                if let Some(hit) = sphere.intersect(&ray, Interval::FORWARD) {
+                    hits += 1;
+                    if ((hit.point - center).length() - radius).abs() > 1e-6 * radius {
+                        failures += 1;
+                    }
+                }
+            }
+        }
+    }
+    // the rays aimed within r of the centre hit: grid points with
+    // 0.095·√(i² + j²) < 1, 349 of the 441, for each sphere
+    assert_eq!(hits, 2 * 349);
+    assert_eq!(failures, 0);
+}

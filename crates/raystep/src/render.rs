@@ -1,0 +1,134 @@
+//! `raystep render SCENE.toml`: render a scene file to a PNG.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use raystep_render::{Image, Progress, RenderOptions};
+use raystep_scene::{MAX_SIZE, Scene};
+
+use crate::{Error, shown};
+
+/// A chapter's renderer: the scene (with its size already chosen), the
+/// file name for messages, and how to run.
+type Renderer = fn(&Scene, &str, &RenderOptions) -> Result<Image, String>;
+
+/// The renderers, in lecture order; each chapter renders what it has taught
+/// so far. A scene is rendered by its own chapter's renderer when it lies in
+/// a chapter folder, else by the latest.
+const RENDERERS: &[(&str, Renderer)] = &[("ch03", render_ch03)];
+
+fn render_ch03(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
+    let world = ch03::World::from_scene(scene, file).map_err(|e| e.to_string())?;
+    ch03::render(&world, ch03::Terms::All, options).map_err(|e| e.to_string())
+}
+
+/// What `raystep render` was asked to do.
+#[derive(Debug)]
+pub struct Options {
+    /// The scene file.
+    pub scene: PathBuf,
+    /// The PNG to write; `<scene name>.png` in the current folder by default.
+    pub out: Option<PathBuf>,
+    /// `WxH`, overriding the scene's image size.
+    pub size: Option<String>,
+    /// Worker threads; all cores by default.
+    pub threads: Option<usize>,
+    /// The chapter whose renderer to use.
+    pub chapter: Option<String>,
+}
+
+/// Runs `raystep render`.
+pub fn run(options: &Options) -> Result<ExitCode, Error> {
+    if options.threads == Some(0) {
+        return Err(Error::Usage("--threads 0: must be at least 1".to_string()));
+    }
+    let file = shown(&options.scene);
+    let mut scene = raystep_scene::load(&options.scene).map_err(|e| Error::Usage(e.to_string()))?;
+    if let Some(size) = &options.size {
+        (scene.width, scene.height) = parse_size(size)?;
+    }
+    let (name, renderer) = choose(options.chapter.as_deref(), &options.scene)?;
+    let out = options
+        .out
+        .clone()
+        .unwrap_or_else(|| default_out(&options.scene));
+    let render_options = RenderOptions {
+        threads: options.threads,
+        progress: Progress::Auto,
+    };
+    let image = renderer(&scene, &file, &render_options).map_err(Error::Usage)?;
+    image
+        .write_png(&out)
+        .map_err(|e| Error::Usage(e.to_string()))?;
+    println!(
+        "wrote {} ({}×{}, {name} renderer)",
+        shown(&out),
+        scene.width,
+        scene.height
+    );
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `640x360` (or `640×360`) → (640, 360), each side 1 ..= MAX_SIZE.
+fn parse_size(size: &str) -> Result<(u32, u32), Error> {
+    let bad = || {
+        Error::Usage(format!(
+            "--size {size}: expected WIDTHxHEIGHT, each 1 to {MAX_SIZE}, e.g. 640x360"
+        ))
+    };
+    let (w, h) = size.split_once(['x', 'X', '×']).ok_or_else(bad)?;
+    let w: u32 = w.trim().parse().map_err(|_| bad())?;
+    let h: u32 = h.trim().parse().map_err(|_| bad())?;
+    if !(1..=MAX_SIZE).contains(&w) || !(1..=MAX_SIZE).contains(&h) {
+        return Err(bad());
+    }
+    Ok((w, h))
+}
+
+/// The renderer for `--chapter`, else the chapter folder holding the scene,
+/// else the latest.
+fn choose(chapter: Option<&str>, scene: &Path) -> Result<(&'static str, Renderer), Error> {
+    if let Some(arg) = chapter {
+        return Ok(*crate::workspace::resolve(arg, RENDERERS, |r| r.0)?);
+    }
+    let in_folder = scene
+        .canonicalize()
+        .ok()
+        .and_then(|path| {
+            path.ancestors()
+                .filter_map(|a| a.file_name()?.to_str().map(str::to_string))
+                .find(|name| name.starts_with("ch") && name.contains('-'))
+        })
+        .and_then(|folder| {
+            RENDERERS
+                .iter()
+                .find(|(name, _)| folder.starts_with(name))
+                .copied()
+        });
+    Ok(in_folder.unwrap_or(*RENDERERS.last().expect("at least one renderer")))
+}
+
+fn default_out(scene: &Path) -> PathBuf {
+    let stem = scene
+        .file_stem()
+        .map_or("render".into(), |s| s.to_string_lossy());
+    PathBuf::from(format!("{stem}.png"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes() {
+        assert_eq!(parse_size("640x360").unwrap(), (640, 360));
+        assert_eq!(parse_size("64×36").unwrap(), (64, 36));
+        for bad in ["640", "0x10", "10x0", "5000x10", "axb", "-1x5"] {
+            let message = parse_size(bad).unwrap_err().to_string();
+            assert!(
+                message.starts_with(&format!("--size {bad}: expected")),
+                "{message}"
+            );
+        }
+    }
+}

@@ -1,0 +1,407 @@
+//! Scene files: a complete scene, the defaults, named indices of
+//! refraction, and one test per kind of bad input with its exact message.
+
+use std::path::Path;
+
+use raystep_core::DVec3;
+use raystep_scene::{
+    CameraSpec, Light, MAX_SIZE, Material, Object, REFRACTIVE_INDICES, Scene, SceneError, Shape,
+    index_of_refraction, load, parse,
+};
+
+const EXAMPLE: &str = include_str!("../src/example.toml");
+
+fn v(x: f64, y: f64, z: f64) -> DVec3 {
+    DVec3::new(x, y, z)
+}
+
+#[test]
+fn the_complete_example_scene_reads_into_the_expected_values() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/example.toml");
+    let scene = load(&path).unwrap();
+    assert_eq!(scene, parse(EXAMPLE, "example.toml").unwrap());
+    let red = Material {
+        name: "red".into(),
+        ka: v(0.1, 0.0, 0.0),
+        kd: v(0.7, 0.1, 0.1),
+        ks: DVec3::splat(0.3),
+        p: 32.0,
+        kr: DVec3::ZERO,
+        kt: DVec3::ZERO,
+        ior: 1.0,
+    };
+    let glass = Material {
+        name: "glass".into(),
+        ka: DVec3::ZERO,
+        kd: DVec3::ZERO,
+        ks: DVec3::splat(0.5),
+        p: 200.0,
+        kr: DVec3::splat(0.1),
+        kt: DVec3::splat(0.9),
+        ior: 1.5,
+    };
+    let default = Material {
+        ka: DVec3::splat(0.5),
+        kd: DVec3::splat(0.5),
+        ..Material::default()
+    };
+    let expected = Scene {
+        width: 320,
+        height: 180,
+        camera: CameraSpec {
+            look_from: v(0.0, 1.0, 5.0),
+            look_at: DVec3::ZERO,
+            up: DVec3::Y,
+            vfov: 40.0,
+        },
+        ambient: DVec3::splat(0.1),
+        lights: vec![
+            Light {
+                position: v(5.0, 5.0, 5.0),
+                intensity: DVec3::ONE,
+            },
+            Light {
+                position: v(-5.0, 3.0, 2.0),
+                intensity: v(0.2, 0.2, 0.3),
+            },
+        ],
+        // "default" first, then the others in file order
+        materials: vec![default, red, glass],
+        objects: vec![
+            Object {
+                shape: Shape::Sphere {
+                    center: DVec3::ZERO,
+                    radius: 1.0,
+                },
+                material: 1,
+                line: 46,
+            },
+            Object {
+                shape: Shape::Sphere {
+                    center: v(1.5, 0.0, 1.0),
+                    radius: 0.5,
+                },
+                material: 2,
+                line: 50,
+            },
+            Object {
+                shape: Shape::Plane {
+                    point: v(0.0, -1.0, 0.0),
+                    normal: DVec3::Y, // normalised from [0, 2, 0]
+                },
+                material: 0,
+                line: 54,
+            },
+            Object {
+                shape: Shape::Polygon {
+                    vertices: vec![v(-2.0, -1.0, -2.0), v(2.0, -1.0, -2.0), v(0.0, 2.0, -2.0)],
+                },
+                material: 1,
+                line: 57,
+            },
+        ],
+    };
+    assert_eq!(scene, expected);
+    for object in &scene.objects {
+        let header = EXAMPLE.lines().nth(object.line - 1).unwrap();
+        assert!(header.starts_with("[[objects]]"), "line {}", object.line);
+    }
+    let camera = scene.camera();
+    assert!((camera.aspect - 16.0 / 9.0).abs() < 1e-12);
+    assert!((camera.forward - v(0.0, -1.0, -5.0).normalize()).length() < 1e-12);
+    assert_eq!(scene.material(&scene.objects[1]).name, "glass");
+}
+
+#[test]
+fn a_scene_with_only_a_camera_gets_every_default() {
+    let scene = parse(
+        "[camera]\nlook_from = [0, 1, 5]\nlook_at = [0, 0, 0]\n",
+        "minimal.toml",
+    )
+    .unwrap();
+    assert_eq!(
+        scene,
+        Scene {
+            width: 320,
+            height: 180,
+            camera: CameraSpec {
+                look_from: v(0.0, 1.0, 5.0),
+                look_at: DVec3::ZERO,
+                up: DVec3::Y,
+                vfov: 40.0,
+            },
+            ambient: DVec3::splat(0.1),
+            lights: vec![],
+            materials: vec![Material {
+                name: "default".into(),
+                ka: DVec3::splat(0.7),
+                kd: DVec3::splat(0.7),
+                ks: DVec3::ZERO,
+                p: 32.0,
+                kr: DVec3::ZERO,
+                kt: DVec3::ZERO,
+                ior: 1.0,
+            }],
+            objects: vec![],
+        }
+    );
+}
+
+#[test]
+fn material_fields_default_one_by_one_and_ka_follows_kd() {
+    let scene = parse(
+        "[camera]\nlook_from = [0, 1, 5]\nlook_at = [0, 0, 0]\n\
+         [materials.blue]\nkd = [0, 0, 0.8]\n\
+         [[objects]]\n[objects.sphere]\ncenter = [0, 0, 0]\nradius = 2\n",
+        "m.toml",
+    )
+    .unwrap();
+    assert_eq!(
+        scene.materials[1],
+        Material {
+            name: "blue".into(),
+            ka: v(0.0, 0.0, 0.8),
+            kd: v(0.0, 0.0, 0.8),
+            ..Material::default()
+        }
+    );
+    // an object without `material` uses "default", and a sub-table works
+    // as well as an inline table
+    assert_eq!(scene.objects[0].material, 0);
+    assert_eq!(scene.objects[0].line, 6);
+    assert_eq!(
+        scene.objects[0].shape,
+        Shape::Sphere {
+            center: DVec3::ZERO,
+            radius: 2.0
+        }
+    );
+}
+
+#[test]
+fn ior_takes_the_lectures_names_or_a_number() {
+    assert_eq!(REFRACTIVE_INDICES.len(), 7);
+    for (name, ior) in REFRACTIVE_INDICES {
+        assert_eq!(index_of_refraction(name), Some(ior));
+        let source = format!(
+            "[camera]\nlook_from = [0, 1, 5]\nlook_at = [0, 0, 0]\n[materials.m]\nior = {name:?}\n"
+        );
+        assert_eq!(parse(&source, "ior.toml").unwrap().materials[1].ior, ior);
+    }
+    assert_eq!(index_of_refraction("water"), Some(1.33));
+    assert_eq!(index_of_refraction("diamond"), Some(2.417));
+    assert_eq!(index_of_refraction("DIAMOND"), Some(2.417));
+    assert_eq!(index_of_refraction("unobtainium"), None);
+    let numeric =
+        "[camera]\nlook_from = [0, 1, 5]\nlook_at = [0, 0, 0]\n[materials.m]\nior = 1.7\n";
+    assert_eq!(parse(numeric, "ior.toml").unwrap().materials[1].ior, 1.7);
+}
+
+#[test]
+fn an_unreadable_file_names_the_path_and_the_os_error() {
+    let error = load(Path::new("/nonexistent/scene.toml")).unwrap_err();
+    assert!(matches!(error, SceneError::Read { .. }));
+    assert_eq!(
+        error.to_string(),
+        "/nonexistent/scene.toml: cannot read the scene file: No such file or directory (os error 2)"
+    );
+}
+
+/// A valid camera, three lines, for the cases below that are about
+/// something else.
+macro_rules! camera {
+    () => {
+        "[camera]\nlook_from = [0, 1, 5]\nlook_at = [0, 0, 0]\n"
+    };
+}
+
+/// One `#[test]` per bad input, asserting its exact message, plus
+/// `ERROR_TABLE`, all of them, for the snapshot that documents them.
+macro_rules! bad_inputs {
+    ($($name:ident: $source:expr => $message:expr;)*) => {
+        $(
+            #[test]
+            fn $name() {
+                let error = parse($source, "bad.toml").unwrap_err();
+                assert_eq!(error.to_string(), $message);
+            }
+        )*
+        const ERROR_TABLE: &[(&str, &str)] = &[$((stringify!($name), $source)),*];
+    };
+}
+
+bad_inputs! {
+    toml_syntax_error:
+        "[camera]\nlook_from = [0, 1, 5\nlook_at = [0, 0, 0]\n"
+        => "bad.toml:3:1: TOML syntax: missing comma between array elements, expected `,`";
+    toml_duplicate_key:
+        concat!(camera!(), "vfov = 40\nvfov = 50\n")
+        => "bad.toml:5:1: TOML syntax: duplicate key `vfov`";
+    unknown_top_level_table:
+        concat!(camera!(), "[light]\nposition = [1, 1, 1]\n")
+        => "bad.toml:4:2: light: unknown field, expected one of `image`, `camera`, `ambient`, `lights`, `materials`, `objects`";
+    unknown_camera_field:
+        concat!(camera!(), "fov = 40\n")
+        => "bad.toml:4:1: camera.fov: unknown field, expected one of `look_from`, `look_at`, `up`, `vfov`";
+    unknown_field_in_an_inline_table:
+        concat!(camera!(), "[[objects]]\nsphere = { center = [0, 0, 0], radius = 1, color = 1 }\n")
+        => "bad.toml:5:44: objects[0].sphere.color: unknown field, expected `center` or `radius`";
+    top_level_key_below_a_table_header:
+        concat!(camera!(), "lights = [{ position = [1, 1, 1] }]\n")
+        => "bad.toml:4:1: camera.lights: unknown field, expected one of `look_from`, `look_at`, `up`, `vfov` (`lights` belongs at the top of the file, above the first [table] header)";
+    unknown_material_field:
+        concat!(camera!(), "[materials.red]\nkd = 1\nshininess = 3\n")
+        => "bad.toml:6:1: materials.red.shininess: unknown field, expected one of `ka`, `kd`, `ks`, `p`, `kr`, `kt`, `ior`";
+    missing_camera:
+        "[image]\nwidth = 10\n"
+        => "bad.toml:1:1: camera: required, but missing";
+    missing_look_from:
+        "# no eye\n[camera]\nlook_at = [0, 0, 0]\n"
+        => "bad.toml:2:1: camera.look_from: required, but missing";
+    missing_sphere_radius:
+        concat!(camera!(), "[[objects]]\nsphere = { center = [0, 0, 0] }\n")
+        => "bad.toml:5:10: objects[0].sphere.radius: required, but missing";
+    missing_light_position:
+        concat!(camera!(), "[[lights]]\nintensity = 1\n[[lights]]\nintensity = 2\n")
+        => "bad.toml:4:1: lights[0].position: required, but missing";
+    wrong_type_string_for_a_number:
+        concat!(camera!(), "vfov = \"wide\"\n")
+        => "bad.toml:4:8: camera.vfov: expected a number, got string \"wide\"";
+    wrong_type_number_for_a_table:
+        "camera = 3\n"
+        => "bad.toml:1:10: camera: expected a table, got integer `3`";
+    wrong_type_table_for_an_array:
+        concat!(camera!(), "[objects]\nsphere = { center = [0, 0, 0], radius = 1 }\n")
+        => "bad.toml:4:1: objects: expected an array, got a table";
+    wrong_type_number_for_a_point:
+        concat!(camera!(), "up = 1\n")
+        => "bad.toml:4:6: camera.up: expected an array of 3 numbers [x, y, z], got integer `1`";
+    wrong_type_in_a_point:
+        "[camera]\nlook_from = [0, 1, 5]\nlook_at = [0, \"a\", 0]\n"
+        => "bad.toml:3:15: camera.look_at[1]: expected a number, got string \"a\"";
+    wrong_length_of_a_point:
+        "[camera]\nlook_from = [0, 1]\nlook_at = [0, 0, 0]\n"
+        => "bad.toml:2:13: camera.look_from: expected an array of 3 numbers [x, y, z], got 2 elements";
+    wrong_length_of_a_colour:
+        concat!(camera!(), "[ambient]\nintensity = [0.1, 0.1, 0.1, 1]\n")
+        => "bad.toml:5:13: ambient.intensity: expected an array of 3 numbers [r, g, b], got 4 elements";
+    wrong_type_float_for_an_integer:
+        concat!(camera!(), "[image]\nwidth = 320.5\n")
+        => "bad.toml:5:9: image.width: expected an integer, got floating point `320.5`";
+    wrong_type_number_for_a_material_name:
+        concat!(camera!(), "[[objects]]\nsphere = { center = [0, 0, 0], radius = 1 }\nmaterial = 1\n")
+        => "bad.toml:6:12: objects[0].material: expected a string, got integer `1`";
+    negative_radius:
+        concat!(camera!(), "[[objects]]\nplane = { point = [0, 0, 0], normal = [0, 1, 0] }\n",
+                "[[objects]]\nsphere = { center = [0, 0, 0], radius = 1 }\n",
+                "[[objects]]\nsphere = { center = [0, 0, 0], radius = -1 }\n")
+        => "bad.toml:9:41: objects[2].sphere.radius: must be positive, got -1";
+    zero_radius:
+        concat!(camera!(), "[[objects]]\n[objects.sphere]\ncenter = [0, 0, 0]\nradius = 0.0\n")
+        => "bad.toml:7:10: objects[0].sphere.radius: must be positive, got 0";
+    zero_plane_normal:
+        concat!(camera!(), "[[objects]]\nplane = { point = [0, 0, 0], normal = [0, 0, 0] }\n")
+        => "bad.toml:5:39: objects[0].plane.normal: must have a non-zero length, got [0, 0, 0]";
+    too_few_polygon_vertices:
+        concat!(camera!(), "[[objects]]\npolygon = { vertices = [[0, 0, 0], [1, 0, 0]] }\n")
+        => "bad.toml:5:24: objects[0].polygon.vertices: a polygon needs at least 3 vertices, got 2";
+    infinite_coordinate:
+        "[camera]\nlook_from = [0, inf, 5]\nlook_at = [0, 0, 0]\n"
+        => "bad.toml:2:17: camera.look_from[1]: must be a finite number, got inf";
+    nan_radius:
+        concat!(camera!(), "[[objects]]\nsphere = { center = [0, 0, 0], radius = nan }\n")
+        => "bad.toml:5:41: objects[0].sphere.radius: must be a finite number, got nan";
+    infinite_intensity:
+        concat!(camera!(), "[[lights]]\nposition = [1, 1, 1]\nintensity = -inf\n")
+        => "bad.toml:6:13: lights[0].intensity: must be a finite number, got -inf";
+    negative_colour_component:
+        concat!(camera!(), "[materials.red]\nkd = [0.5, -0.1, 0]\n")
+        => "bad.toml:5:12: materials.red.kd[1]: must not be negative, got -0.1";
+    negative_grey_intensity:
+        concat!(camera!(), "[[lights]]\nposition = [1, 1, 1]\nintensity = -1\n")
+        => "bad.toml:6:13: lights[0].intensity: must not be negative, got -1";
+    zero_phong_exponent:
+        concat!(camera!(), "[materials.shiny]\np = 0\n")
+        => "bad.toml:5:5: materials.shiny.p: must be positive, got 0";
+    negative_ior:
+        concat!(camera!(), "[materials.odd]\nior = -1.5\n")
+        => "bad.toml:5:7: materials.odd.ior: must be positive, got -1.5";
+    unknown_ior_name:
+        concat!(camera!(), "[materials.lens]\nior = \"glas\"\n")
+        => "bad.toml:5:7: materials.lens.ior: unknown name \"glas\", expected a positive number or one of vacuum, air, water, glass, ice, quartz, diamond";
+    unknown_material_in_an_object:
+        concat!(camera!(), "[materials.red]\nkd = [1, 0, 0]\n[materials.green]\nkd = [0, 1, 0]\n",
+                "[[objects]]\nsphere = { center = [0, 0, 0], radius = 1 }\nmaterial = \"blue\"\n")
+        => "bad.toml:10:12: objects[0].material: unknown material \"blue\", defined: default, red, green";
+    image_width_zero:
+        concat!(camera!(), "[image]\nwidth = 0\n")
+        => "bad.toml:5:9: image.width: must be between 1 and 4096 (MAX_SIZE), got 0";
+    image_height_too_large:
+        concat!(camera!(), "[image]\nheight = 5000\n")
+        => "bad.toml:5:10: image.height: must be between 1 and 4096 (MAX_SIZE), got 5000";
+    image_width_negative:
+        concat!("image = { width = -3 }\n", camera!())
+        => "bad.toml:1:19: image.width: must be between 1 and 4096 (MAX_SIZE), got -3";
+    vfov_zero:
+        concat!(camera!(), "vfov = 0\n")
+        => "bad.toml:4:8: camera.vfov: must be between 0 and 180 degrees (both excluded), got 0";
+    vfov_180:
+        concat!(camera!(), "vfov = 180.0\n")
+        => "bad.toml:4:8: camera.vfov: must be between 0 and 180 degrees (both excluded), got 180";
+    up_parallel_to_the_view:
+        "[camera]\nlook_from = [0, 5, 0]\nlook_at = [0, 0, 0]\nup = [0, 2, 0]\n"
+        => "bad.toml:4:6: camera.up: must not be parallel to the view direction (look_at - look_from = [0, -5, 0]), got [0, 2, 0]";
+    default_up_parallel_to_the_view:
+        "[camera]\nlook_from = [0, 5, 0]\nlook_at = [0, 0, 0]\n"
+        => "bad.toml:1:1: camera.up: the default [0, 1, 0] is parallel to the view direction (look_at - look_from = [0, -5, 0]); give another `up`";
+    up_zero:
+        concat!(camera!(), "up = [0, 0, 0]\n")
+        => "bad.toml:4:6: camera.up: must not be zero-length, got [0, 0, 0]";
+    look_from_equals_look_at:
+        "[camera]\nlook_from = [1, 2, 3]\nlook_at = [1, 2, 3]\n"
+        => "bad.toml:3:11: camera.look_at: must differ from look_from, both are [1, 2, 3]";
+    look_at_too_far_for_a_direction:
+        "[camera]\nlook_from = [-1e308, 0, 0]\nlook_at = [1e308, 0, 0]\n"
+        => "bad.toml:3:11: camera.look_at: too close to or too far from look_from to give a view direction (look_at - look_from = [inf, 0, 0])";
+    object_without_a_shape:
+        concat!(camera!(), "[[objects]]\nsphere = { center = [0, 0, 0], radius = 1 }\n[[objects]]\nmaterial = \"default\"\n")
+        => "bad.toml:6:1: objects[1]: needs a shape: one of `sphere`, `plane` or `polygon`";
+    object_with_two_shapes:
+        concat!(camera!(), "[[objects]]\nsphere = { center = [0, 0, 0], radius = 1 }\nplane = { point = [0, 0, 0], normal = [0, 1, 0] }\n")
+        => "bad.toml:6:9: objects[0].plane: an object has exactly one shape, this one already has `sphere`";
+}
+
+#[test]
+fn every_bad_input_and_its_message() {
+    let mut table = String::from("case | message\n---- | -------\n");
+    for (name, source) in ERROR_TABLE {
+        let error = parse(source, "bad.toml").unwrap_err();
+        table.push_str(&format!("{name} | {error}\n"));
+    }
+    let error = load(Path::new("/nonexistent/scene.toml")).unwrap_err();
+    table.push_str(&format!("unreadable_file | {error}\n"));
+    insta::assert_snapshot!(table);
+}
+
+#[test]
+fn a_tiny_plane_normal_still_has_a_direction() {
+    let source = format!(
+        "{}[[objects]]\nplane = {{ point = [0, 0, 0], normal = [0, 0, -1e-200] }}\n",
+        camera!()
+    );
+    let scene = parse(&source, "ok.toml").unwrap();
+    assert_eq!(
+        scene.objects[0].shape,
+        Shape::Plane {
+            point: DVec3::ZERO,
+            normal: DVec3::NEG_Z
+        }
+    );
+}
+
+#[test]
+fn limits_are_inclusive() {
+    let source = format!("{}[image]\nwidth = 1\nheight = {MAX_SIZE}\n", camera!());
+    let scene = parse(&source, "ok.toml").unwrap();
+    assert_eq!((scene.width, scene.height), (1, MAX_SIZE));
+}
