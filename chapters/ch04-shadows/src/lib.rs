@@ -1,0 +1,2 @@
+//! # Chapter 04 — shadows (work in progress)
+pub mod figures;
