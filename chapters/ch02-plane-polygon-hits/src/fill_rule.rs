@@ -9,7 +9,8 @@ use raystep_core::DVec2;
 /// `n.x > 0`, or for a horizontal edge `n.y > 0`. That one owns the edge.
 /// This is the same as nudging the point right by δ and up by δ²: every
 /// point, on an edge or a shared vertex, then lies inside exactly one
-/// polygon of a mesh — none falls between, none counts twice.
+/// polygon of a flat mesh — none falls between, none counts twice — as long
+/// as the polygons compute the same hit point (one exactly shared plane).
 pub fn owns_boundary(a: DVec2, b: DVec2) -> bool {
     let inward = ch01::rotate90(b - a);
     inward.x > 0.0 || (inward.x == 0.0 && inward.y > 0.0)

@@ -75,7 +75,8 @@ impl Polygon {
         &self.outline
     }
 
-    /// Is the outline convex (then the edge test decides inside)?
+    /// Is the outline convex, every vertex turning left by more than a
+    /// rounding error (then the edge test decides inside)?
     pub fn is_convex(&self) -> bool {
         self.convex
     }
@@ -148,12 +149,23 @@ fn signed_area(outline: &[DVec2]) -> f64 {
     area
 }
 
-/// Does a counter-clockwise outline turn left (or go straight) at every vertex?
+/// Below this sine of the turn at a vertex, the outline counts as not
+/// convex and gets the crossing test. At an almost straight vertex the edge
+/// test would consult the neighbouring edge for points on an edge, where
+/// that edge's f is rounding noise; the crossing test never does.
+const CONVEX_TURN_SINE: f64 = 1e-9;
+
+/// Does a counter-clockwise outline turn clearly left at every vertex?
+/// (Repeated vertices are skipped.)
 fn is_convex(ccw: &[DVec2]) -> bool {
     let n = ccw.len();
     (0..n).all(|i| {
         let (a, b, c) = (ccw[i], ccw[(i + 1) % n], ccw[(i + 2) % n]);
-        (b - a).perp_dot(c - b) >= 0.0
+        let (e1, e2) = (b - a, c - b);
+        if e1 == DVec2::ZERO || e2 == DVec2::ZERO {
+            return true;
+        }
+        e1.perp_dot(e2) > CONVEX_TURN_SINE * e1.length() * e2.length()
     })
 }
 

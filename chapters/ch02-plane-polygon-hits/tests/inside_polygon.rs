@@ -75,6 +75,26 @@ fn degenerate_and_nan_input_is_outside() {
     assert!(inside_convex(&with_repeat, p(0.2, 0.2)));
 }
 
+#[test]
+fn crossing_test_on_a_concave_l_either_way_round() {
+    let l = [
+        (0.0, 0.0),
+        (2.0, 0.0),
+        (2.0, 1.0),
+        (1.0, 1.0),
+        (1.0, 2.0),
+        (0.0, 2.0),
+    ]
+    .map(|(x, y)| p(x, y));
+    assert!(inside_crossing(&l, p(0.5, 1.5)));
+    assert!(inside_crossing(&l, p(1.5, 0.5)));
+    assert!(!inside_crossing(&l, p(1.5, 1.5)), "the notch");
+    let mut cw = l;
+    cw.reverse();
+    assert!(inside_crossing(&cw, p(0.5, 1.5)));
+    assert!(!inside_crossing(&cw, p(1.5, 1.5)));
+}
+
 fn convex_polygon() -> impl Strategy<Value = Vec<DVec2>> {
     // points on a circle at sorted angles: convex and counter-clockwise
     (3usize..8, 0.5..4.0f64, -3.0..3.0f64, -3.0..3.0f64).prop_flat_map(|(n, r, cx, cy)| {

@@ -190,3 +190,42 @@ fn stable_from_1e_minus_6_to_1e6() {
     assert_eq!(checked, 13 * 5);
     assert_eq!(failures, 0);
 }
+
+/// Two polygons sharing a chain a → m → b whose middle vertex m is placed by
+/// rounding, a hair off the straight line: one polygon is concave there, the
+/// other convex by a rounding error only. The edge test would consult the
+/// almost-in-line neighbour edge, whose f is noise, and leak; such a
+/// polygon counts as not convex and gets the crossing test, like its
+/// neighbour. Rays straight down through points along the chain and at m:
+/// 0 fall through, 0 counted twice.
+#[test]
+fn chain_with_an_almost_straight_vertex() {
+    let (mut rays, mut fall_through, mut twice) = (0, 0, 0);
+    for i in 0..40 {
+        let x0 = 0.1 + 0.0173 * f64::from(i);
+        let x1 = 0.9 - 0.0131 * f64::from(i);
+        let (a, b) = (v(x0, 0.0, 0.0), v(x1, 1.0, 0.0));
+        for k in 1..7 {
+            let m = a + (b - a) * (f64::from(k) / 7.0); // rounded: not exactly on a–b
+            let left = Polygon::new(vec![a, m, b, v(-1.0, 1.0, 0.0), v(-1.0, 0.0, 0.0)]).unwrap();
+            let right = Polygon::new(vec![a, v(2.0, 0.0, 0.0), v(2.0, 1.0, 0.0), b, m]).unwrap();
+            let pair = [left, right];
+            let mut targets = vec![m];
+            for j in 1..25 {
+                let s = f64::from(j) / 25.0;
+                targets.push(a + (m - a) * s);
+                targets.push(m + (b - m) * s);
+            }
+            for q in targets {
+                rays += 1;
+                match hits(&pair, &Ray::new(v(q.x, q.y, 1.0), v(0.0, 0.0, -1.0))) {
+                    0 => fall_through += 1,
+                    1 => {}
+                    _ => twice += 1,
+                }
+            }
+        }
+    }
+    assert_eq!(rays, 40 * 6 * 49);
+    assert_eq!((fall_through, twice), (0, 0));
+}
