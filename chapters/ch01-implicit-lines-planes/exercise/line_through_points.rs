@@ -1,6 +1,6 @@
 //! Exercise 1: the implicit line through two points.
 //!
-//! Fill in the three functions below; `cargo run -- check ch01` (or
+//! Fill in the three functions below; `cargo run --release -- check ch01` (or
 //! `cargo test -p ch01-implicit-lines-planes --features exercise`) judges them.
 use crate::{Degenerate, Line2};
 use raystep_core::DVec2;

@@ -1,7 +1,7 @@
 //! Exercise 2: the implicit plane through three points.
 //!
-//! Fill in the two functions below; `cargo run -- check ch01` judges them.
-use crate::{Degenerate, Plane};
+//! Fill in the two functions below; `cargo run --release -- check ch01` judges them.
+use crate::{COLLINEAR_SINE, Degenerate, Plane};
 use raystep_core::DVec3;
 
 impl Plane {
@@ -17,7 +17,7 @@ impl Plane {
         // ::Collinear when |E1×E2| ≤ COLLINEAR_SINE·|E1|·|E2|. Scale each
         // edge by its largest component before the cross product so that
         // edges of length 1e-200 or 1e200 still give a unit normal.
-        let _ = (p0, p1, p2);
+        let _ = (p0, p1, p2, COLLINEAR_SINE);
         todo!()
     }
 

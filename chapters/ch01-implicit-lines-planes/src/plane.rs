@@ -18,6 +18,8 @@ pub struct Plane {
 // ANCHOR: collinear_sine
 /// Below this sine of the angle between E₁ and E₂ the points count as
 /// collinear: the rounding of the inputs alone could then turn the normal
-/// by more than about 1e-4 rad.
+/// by more than about 1e-4 rad (for coordinates about as large as the
+/// edges; a small triangle far from the origin, |P| ≫ |E|, is worse by the
+/// factor |P|/|E|).
 pub const COLLINEAR_SINE: f64 = 1e-12;
 // ANCHOR_END: collinear_sine

@@ -14,7 +14,8 @@ pub fn ray_plane(plane: &Plane, ray: &Ray, interval: Interval) -> RayPlane {
     //   magnitude) with magnitude N.abs()·D.abs() for N·D, and
     //   N.abs()·P0.abs() + |d| for N·P0 + d.
     // - t in `interval` → RayPlane::Hit(t); otherwise RayPlane::Outside(t)
-    //   (e.g. t < 0: the plane is behind the origin).
+    //   (e.g. t < 0: the plane is behind the origin). Use interval.contains(t):
+    //   the interval is closed, so a ray starting on the plane is Hit(0).
     let _ = (plane, ray, interval, zero_within_rounding);
     todo!()
 }

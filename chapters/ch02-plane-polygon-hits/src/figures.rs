@@ -274,7 +274,7 @@ fn edge(vertices: &[DVec2], i: usize) -> (DVec2, DVec2) {
 /// The edge test on a convex polygon: inward normals, every f(Q) ≥ 0, one f(R) < 0.
 fn inside_test() -> Figure {
     let q = DVec2::new(2.0, 2.0);
-    let r = DVec2::new(6.0, 1.0);
+    let r = DVec2::new(5.5, 1.0); // off every edge line, so only f₂ is negative
     let (q_in, r_in) = (inside_convex(&HOUSE, q), inside_convex(&HOUSE, r));
     assert!(q_in && !r_in, "Q is inside the house, R outside");
     let verdict = |inside: bool| if inside { "inside" } else { "outside" };

@@ -87,7 +87,7 @@ fn concave_polygon_uses_the_crossing_test() {
 
 /// A fan of polygons around a shared centre vertex, all in one plane
 /// (z = 0.75) but turned by an odd angle, mixing triangles, a quad and a
-/// concave pentagon. Rays straight down through the centre, through many
+/// concave quadrilateral. Rays straight down through the centre, through many
 /// points of every shared edge, and through a grid of points; rays from an
 /// eye through the same points. Every ray must hit exactly one polygon: 0
 /// fall through, 0 counted twice.
@@ -104,7 +104,7 @@ fn fan_shared_edges_and_vertex() {
         })
         .collect();
     // polygons between consecutive rim vertices; two of them merged into a
-    // quad, and one given an extra notch vertex (concave pentagon)
+    // quad, and one given an extra notch vertex (concave quadrilateral)
     let mut fan = Vec::new();
     fan.push(Polygon::new(vec![centre, rim[0], rim[1], rim[2]]).unwrap()); // quad
     fan.push(Polygon::new(vec![centre, rim[2], rim[3]]).unwrap());
