@@ -1,0 +1,78 @@
+//! The whole chapter at work: one ray per pixel, the closest hit, the local
+//! model. These use every exercise.
+use std::path::Path;
+
+use ch03::{DVec3, Image, RenderOptions, Terms, World, render};
+use raystep_check::{Tolerance, assert_image_matches};
+use raystep_render::Progress;
+
+fn spheres(width: u32, height: u32) -> World {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/spheres.toml");
+    let mut world = World::load(&path).expect("the chapter's scene loads");
+    // the same 16:9 framing, fewer pixels
+    (world.width, world.height) = (width, height);
+    world
+}
+
+fn quiet(threads: Option<usize>) -> RenderOptions {
+    RenderOptions {
+        threads,
+        progress: Progress::Never,
+    }
+}
+
+#[test]
+fn ascii_render() {
+    let image = render(&spheres(64, 36), Terms::All, &quiet(None)).unwrap();
+    insta::assert_snapshot!(image.to_ascii(64));
+}
+
+/// The scene at 160×90 against the reference render, within the default
+/// tolerance (2 levels of 8-bit sRGB on at most 0.1 % of the pixels). On a
+/// mismatch, actual, expected and diff images land in target/image-diffs/.
+#[test]
+fn matches_the_reference_render() {
+    let image = render(&spheres(160, 90), Terms::All, &quiet(None)).unwrap();
+    let expected = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/images/spheres-160x90.png");
+    assert_image_matches(&image, &expected, Tolerance::default());
+}
+
+/// Rows run in parallel, but every pixel is computed on its own: one thread
+/// or two give the same bits.
+#[test]
+fn same_image_for_one_and_two_threads() {
+    let world = spheres(48, 27);
+    let one = render(&world, Terms::All, &quiet(Some(1))).unwrap();
+    let two = render(&world, Terms::All, &quiet(Some(2))).unwrap();
+    let bits = |image: &Image| {
+        image
+            .pixels()
+            .iter()
+            .map(|c| c.to_array().map(f64::to_bits))
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(bits(&one), bits(&two));
+}
+
+/// Adding terms never darkens a pixel: ambient ≤ ambient + diffuse ≤ all,
+/// channel by channel; and the ambient-only image is flat per material
+/// (ka·Ia does not depend on the geometry).
+#[test]
+fn terms_add_up() {
+    let world = spheres(48, 27);
+    let [a, ad, all] = [Terms::Ambient, Terms::AmbientDiffuse, Terms::All]
+        .map(|terms| render(&world, terms, &quiet(None)).unwrap());
+    for ((a, ad), all) in a.pixels().iter().zip(ad.pixels()).zip(all.pixels()) {
+        assert!(a.cmple(*ad).all() && ad.cmple(*all).all(), "{a} {ad} {all}");
+    }
+    let mut ambient_levels: Vec<[u64; 3]> = a
+        .pixels()
+        .iter()
+        .map(|c| c.to_array().map(f64::to_bits))
+        .collect();
+    ambient_levels.sort_unstable();
+    ambient_levels.dedup();
+    // black sky, floor, three spheres
+    assert_eq!(ambient_levels.len(), 5);
+    assert!(a.pixels().contains(&DVec3::ZERO));
+}
