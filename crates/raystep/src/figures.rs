@@ -17,6 +17,7 @@ pub const CHAPTERS: &[ChapterFigures] = &[
     ("ch01", ch01::figures::all),
     ("ch02", ch02::figures::all),
     ("ch03", ch03::figures::all),
+    ("ch04", ch04::figures::all),
 ];
 
 /// What `raystep figures` was asked to do.

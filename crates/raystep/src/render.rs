@@ -15,11 +15,18 @@ type Renderer = fn(&Scene, &str, &RenderOptions) -> Result<Image, String>;
 /// The renderers, in lecture order; each chapter renders what it has taught
 /// so far. A scene is rendered by its own chapter's renderer when it lies in
 /// a chapter folder, else by the latest.
-const RENDERERS: &[(&str, Renderer)] = &[("ch03", render_ch03)];
+const RENDERERS: &[(&str, Renderer)] = &[("ch03", render_ch03), ("ch04", render_ch04)];
 
+/// Chapter 03: the local model, every light visible.
 fn render_ch03(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
     let world = ch03::World::from_scene(scene, file).map_err(|e| e.to_string())?;
     ch03::render(&world, ch03::Terms::All, options).map_err(|e| e.to_string())
+}
+
+/// Chapter 04: shadow rays, with the scale-aware offset against acne.
+fn render_ch04(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
+    let world = ch03::World::from_scene(scene, file).map_err(|e| e.to_string())?;
+    ch04::render(&world, ch04::Offset::ScaleAware, options).map_err(|e| e.to_string())
 }
 
 /// What `raystep render` was asked to do.

@@ -1,0 +1,96 @@
+//! Measuring acne and leaks: each strategy's Sᵢ against the truth.
+use crate::{Offset, shadow_ray};
+use ch03::World;
+use raystep_core::{Interval, Ray};
+
+/// How often a strategy gets a shadow wrong (see [`shadow_errors`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ShadowErrors {
+    /// The pixel–light pairs judged: the primary ray hits something and the
+    /// light is in front of the surface (N·L > 0). With one light, pixels.
+    pub pixels: usize,
+    /// Acne: the truth is lit, the strategy's shadow ray is blocked (the
+    /// surface shadows itself, or the origin was pushed into a neighbour).
+    pub acne: usize,
+    /// Leaks: the truth is in shadow, the strategy's shadow ray is not (it
+    /// skipped a blocker close to the point).
+    pub leaks: usize,
+}
+
+impl ShadowErrors {
+    /// `acne / pixels` (0 when nothing was judged).
+    pub fn acne_fraction(&self) -> f64 {
+        fraction(self.acne, self.pixels)
+    }
+
+    /// `leaks / pixels` (0 when nothing was judged).
+    pub fn leak_fraction(&self) -> f64 {
+        fraction(self.leaks, self.pixels)
+    }
+}
+
+fn fraction(count: usize, of: usize) -> f64 {
+    if of == 0 {
+        0.0
+    } else {
+        count as f64 / of as f64
+    }
+}
+
+// ANCHOR: shadow_errors
+/// Renders `world`'s visibility, one primary ray per pixel, and compares
+/// the strategy `offset` with the truth at every pixel–light pair whose
+/// primary ray hits something and whose light is in front of the surface.
+///
+/// The truth is a shadow ray from the unmoved point that ignores the
+/// object it starts on. For spheres and planes that is exact: a convex
+/// surface cannot shadow itself where N·L > 0 (the ray leaves it and never
+/// comes back), so skipping it removes the acne and nothing else. (A
+/// polygon could not be skipped so lightly in a mesh, where its neighbours
+/// are the same surface.)
+pub fn shadow_errors(world: &World, offset: Offset) -> ShadowErrors {
+    let mut errors = ShadowErrors::default();
+    for row in 0..world.height {
+        for column in 0..world.width {
+            let ray = world
+                .camera
+                .pixel_ray(column, row, world.width, world.height);
+            let Some((hit, object)) = world.closest_hit(&ray, Interval::FORWARD) else {
+                continue;
+            };
+            // N facing the viewer, as the shader uses it
+            let normal = if hit.normal.dot(ray.direction) > 0.0 {
+                -hit.normal
+            } else {
+                hit.normal
+            };
+            for light in &world.lights {
+                let to_light = light.position - hit.point;
+                if normal.dot(to_light) <= 0.0 {
+                    continue; // behind the surface: in shadow either way
+                }
+                errors.pixels += 1;
+                // the truth: every object but this one, from the point itself
+                let truth_ray = Ray::new(hit.point, to_light);
+                let truth_blocked = world.objects.iter().any(|other| {
+                    !std::ptr::eq(other, object)
+                        && other
+                            .shape
+                            .intersect(&truth_ray, Interval::new(0.0, 1.0))
+                            .is_some()
+                });
+                // the strategy: every object, from where it starts the ray
+                let (strategy_ray, interval) =
+                    shadow_ray(hit.point, normal, light.position, offset);
+                let blocked = crate::occluded(world, &strategy_ray, interval);
+                match (truth_blocked, blocked) {
+                    (false, true) => errors.acne += 1,
+                    (true, false) => errors.leaks += 1,
+                    _ => {}
+                }
+            }
+        }
+    }
+    errors
+}
+// ANCHOR_END: shadow_errors
