@@ -1,7 +1,657 @@
 //! The chapter's lecture figures, drawn from the reference code.
-use raystep_figure::Figure;
+//!
+//! The side views trace the real scene `scenes/spheres.toml` with
+//! [`World::closest_hit`]; the reflected direction is [`reflect`]'s; the
+//! rendered panels come from [`render`] and [`render_with`].
+use std::path::Path;
+
+use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette};
+use raystep_render::{Progress, RenderOptions, srgb8};
+
+use crate::{
+    Interval, Ray, ShadingTerms, Shape, Terms, World, reflect, render, render_with, shade,
+};
 
 /// Every figure of this chapter, in the order the lecture shows them.
 pub fn all() -> Vec<Figure> {
-    Vec::new()
+    vec![basic_idea(), vectors(), other_rays(), terms(), exponent()]
+}
+
+/// Colours shared by the chapter's figures (N as in chapters 01–02).
+const N_COLOR: Color = palette::VERMILION;
+const RAY_COLOR: Color = palette::BLUE;
+const LIGHT_COLOR: Color = palette::ORANGE;
+const EYE_COLOR: Color = palette::GREEN;
+const REFLECT_COLOR: Color = palette::PURPLE;
+const REFRACT_COLOR: Color = palette::SKY_BLUE;
+
+/// The chapter's scene, as `raystep render` reads it.
+fn spheres() -> World {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/spheres.toml");
+    World::load(&path).expect("the chapter's scene loads")
+}
+
+/// Renders without a progress bar (the image is the same for any number of threads).
+const QUIET: RenderOptions = RenderOptions {
+    threads: None,
+    progress: Progress::Never,
+};
+
+/// A vector arrow.
+fn vector(color: Color) -> Stroke {
+    Stroke::new(color).width(2.5)
+}
+
+/// A linear RGB colour as the figure colour it is stored as.
+fn colour(c: DVec3) -> Color {
+    let [r, g, b] = srgb8(c);
+    Color::rgb(r, g, b)
+}
+
+/// A hollow dot: a hit the loop does not keep.
+fn hollow_point(page: &mut Page, p: DVec2, color: Color) {
+    let r = 4.5 / page.scale();
+    page.circle(
+        p,
+        r,
+        Some(palette::WHITE),
+        Some(&Stroke::new(color).width(2.0)),
+    );
+}
+
+/// A small sun: a light source.
+fn sun(page: &mut Page, p: DVec2) {
+    let r = 7.0 / page.scale();
+    for k in 0..8 {
+        let a = f64::from(k) * std::f64::consts::FRAC_PI_4;
+        let d = DVec2::new(a.cos(), a.sin());
+        page.segment(
+            p + 1.4 * r * d,
+            p + 2.1 * r * d,
+            &Stroke::new(LIGHT_COLOR).width(2.0),
+        );
+    }
+    page.circle(
+        p,
+        r,
+        Some(palette::YELLOW),
+        Some(&Stroke::new(LIGHT_COLOR).width(2.0)),
+    );
+}
+
+/// A small eye: an almond with a pupil, looking along `dir`.
+fn eye(page: &mut Page, p: DVec2, dir: DVec2) {
+    let s = 9.0 / page.scale();
+    let (u, v) = (dir.normalize(), dir.normalize().perp());
+    let almond: Vec<DVec2> = (0..=24)
+        .map(|k| {
+            let a = f64::from(k) / 24.0 * std::f64::consts::TAU;
+            p + s * (1.3 * a.cos() * u + 0.6 * a.sin() * a.cos().abs().mul_add(-0.5, 1.0) * v)
+        })
+        .collect();
+    page.polygon(
+        &almond,
+        Some(palette::WHITE),
+        Some(&Stroke::new(palette::BLACK).width(1.5)),
+    );
+    page.circle(p + 0.35 * s * u, 0.42 * s, Some(EYE_COLOR), None);
+    page.circle(p + 0.35 * s * u, 0.18 * s, Some(palette::BLACK), None);
+}
+
+/// The lines of a text block, top to bottom from `top_left`, `step` world units apart.
+fn text_block(page: &mut Page, top_left: DVec2, step: f64, lines: &[(&str, Color)]) {
+    for (k, (text, color)) in lines.iter().enumerate() {
+        page.label_sized(
+            top_left - DVec2::new(0.0, step * k as f64),
+            text,
+            Anchor::E,
+            16.0,
+            *color,
+        );
+    }
+}
+
+/// A 2D side view of 3D space: the vertical plane through `origin` that contains the horizontal
+/// direction `along`, drawn as (distance along it, height). Points off the plane are projected
+/// straight onto it.
+struct SideView {
+    origin: DVec3,
+    along: DVec3,
+    /// The plane's unit normal, horizontal.
+    across: DVec3,
+}
+
+impl SideView {
+    /// The side view through `origin` containing the horizontal part of `dir`.
+    fn new(origin: DVec3, dir: DVec3) -> SideView {
+        let along = DVec3::new(dir.x, 0.0, dir.z).normalize();
+        SideView {
+            origin,
+            along,
+            across: along.cross(DVec3::Y),
+        }
+    }
+
+    /// The drawing point of `p` (its projection onto the plane): (distance along from the
+    /// origin, height).
+    fn at(&self, p: DVec3) -> DVec2 {
+        DVec2::new((p - self.origin).dot(self.along), p.y)
+    }
+
+    /// The drawing direction of `d`.
+    fn dir(&self, d: DVec3) -> DVec2 {
+        DVec2::new(d.dot(self.along), d.y)
+    }
+
+    /// The 3D point of drawing point `q`, on the plane.
+    fn point(&self, q: DVec2) -> DVec3 {
+        self.origin + q.x * self.along + (q.y - self.origin.y) * DVec3::Y
+    }
+
+    /// How far `p` lies off the plane.
+    fn off(&self, p: DVec3) -> f64 {
+        (p - self.origin).dot(self.across)
+    }
+}
+
+/// For each pixel: shoot a ray, find the closest hit, shade it. A side view of the real camera.
+fn basic_idea() -> Figure {
+    let world = spheres();
+    let camera = world.camera;
+    // the middle column of a 10-row image (u = 1/2): its rays lie in the vertical plane of the eye
+    let rows = 10;
+    let view = SideView::new(camera.eye, camera.forward);
+    debug_assert!(view.off(camera.pixel_ray(0, 0, 1, rows).direction).abs() < 1e-12);
+    let eye_at = view.at(camera.eye);
+
+    let mut page = Page::new(960.0, 440.0)
+        .margin(16.0)
+        .view(DVec2::new(-0.6, -1.9), DVec2::new(9.2, 3.0));
+    // the floor and the other planes, and the spheres the plane cuts
+    for object in &world.objects {
+        let fill = colour(world.materials[object.material].kd);
+        match &object.shape {
+            Shape::Sphere(s) => {
+                let d = view.off(s.center);
+                if d.abs() < s.radius {
+                    page.circle_alpha(
+                        view.at(s.center),
+                        (s.radius * s.radius - d * d).sqrt(),
+                        Some(fill.with_alpha(0.35)),
+                        Some(&Stroke::new(fill).width(2.0)),
+                    );
+                }
+            }
+            Shape::Plane(plane) => {
+                // n·P + d = 0 along the view: a line with normal (n·along, n.y)
+                let g = view.dir(plane.normal);
+                let c = plane.normal.dot(view.point(DVec2::ZERO)) + plane.d;
+                let on = -c / g.length_squared() * g;
+                page.line(on, g.perp(), &Stroke::new(palette::GREY).width(2.5));
+                debug_assert!(
+                    (plane.normal.dot(view.point(on)) + plane.d).abs() < 1e-9,
+                    "the line lies on the plane"
+                );
+            }
+            Shape::Polygon(_) => {} // the scene has none
+        }
+    }
+
+    let mut hits = 0;
+    for row in 0..rows {
+        let ray = camera.pixel_ray(0, row, 1, rows);
+        let from = view.at(ray.origin);
+        let dir = view.dir(ray.direction);
+        match world.closest_hit(&ray, Interval::FORWARD) {
+            Some((hit, object)) => {
+                hits += 1;
+                let at = view.at(hit.point);
+                // hits farther along, which the loop does not keep (those on the page)
+                let (lo, hi) = (page.world_min(), page.world_max());
+                let farther: Vec<f64> = world
+                    .objects
+                    .iter()
+                    .filter(|o| !std::ptr::eq(*o, object))
+                    .filter_map(|o| o.shape.intersect(&ray, Interval::FORWARD))
+                    .map(|h| h.t)
+                    .filter(|&t| {
+                        let q = view.at(ray.at(t));
+                        q.cmpge(lo).all() && q.cmple(hi).all()
+                    })
+                    .collect();
+                if let Some(t_max) = farther.iter().copied().reduce(f64::max) {
+                    page.segment(
+                        at,
+                        view.at(ray.at(t_max)),
+                        &Stroke::new(palette::GREY).width(1.0).dashed(),
+                    );
+                    for t in farther {
+                        hollow_point(&mut page, view.at(ray.at(t)), palette::GREY);
+                    }
+                }
+                page.segment(from, at, &Stroke::new(RAY_COLOR).width(1.5));
+                let shade = colour(crate::trace(&world, &ray));
+                page.circle(
+                    at,
+                    5.0 / page.scale(),
+                    Some(shade),
+                    Some(&Stroke::new(palette::BLACK).width(1.5)),
+                );
+            }
+            None => page.ray(from, dir, &Stroke::new(RAY_COLOR).width(1.5).dashed()),
+        }
+    }
+    assert!(0 < hits && hits < rows, "some rays hit, some miss");
+
+    // the image plane, one unit in front of the eye: one cell per pixel row, in its colour
+    let centre = view.at(camera.eye + camera.forward);
+    let up = view.dir(camera.up) * camera.half_height;
+    let depth = view.dir(camera.forward) * 0.14;
+    for row in 0..rows {
+        let edge = |k: u32| centre + (1.0 - 2.0 * f64::from(k) / f64::from(rows)) * up;
+        let (top, bottom) = (edge(row), edge(row + 1));
+        let pixel = colour(crate::trace(&world, &camera.pixel_ray(0, row, 1, rows)));
+        page.polygon(
+            &[top, bottom, bottom + depth, top + depth],
+            Some(pixel),
+            Some(&Stroke::new(palette::BLACK).width(1.0)),
+        );
+    }
+
+    eye(&mut page, eye_at, view.dir(camera.forward));
+    page.label(eye_at + DVec2::new(0.0, -0.12), "eye", Anchor::S);
+    page.label(centre + up + 0.5 * depth, "image plane", Anchor::N);
+    let x = 2.4;
+    text_block(
+        &mut page,
+        DVec2::new(x, -0.5),
+        0.3,
+        &[(
+            "for each pixel on screen: shoot a ray through it",
+            palette::BLACK,
+        )],
+    );
+    text_block(
+        &mut page,
+        DVec2::new(x + 0.3, -0.8),
+        0.3,
+        &[
+            ("for each object: does the ray hit it?", palette::BLACK),
+            ("keep the closest hit (dot)", palette::BLACK),
+            ("shade it: the pixel's colour", palette::BLACK),
+        ],
+    );
+    text_block(
+        &mut page,
+        DVec2::new(x, -1.75),
+        0.3,
+        &[(
+            "blue dashed: a miss;  hollow dot: a farther hit, dropped",
+            palette::GREY,
+        )],
+    );
+    Figure::new(
+        "basic-idea",
+        "The middle column of a 10-row image of the chapter's scene, seen from the side: each ray goes from the eye through a pixel row of the image plane and stops at its closest hit; the green sphere is cut by the plane of the rays, the floor is the grey line.",
+        page,
+    )
+}
+
+/// N, L, R and V at a surface point, with the angles the local model uses.
+fn vectors() -> Figure {
+    let theta = 40f64.to_radians();
+    let alpha = 22f64.to_radians();
+    let n = DVec3::Y;
+    let l = DVec3::new(-theta.sin(), theta.cos(), 0.0);
+    let r = reflect(l, n);
+    // V: α past R, away from N
+    let (rs, rc) = (alpha.sin(), alpha.cos());
+    let v = DVec3::new(rc * r.x + rs * r.y, -rs * r.x + rc * r.y, 0.0);
+    let flat = |d: DVec3| d.truncate();
+    let (n2, l2, r2, v2) = (flat(n), flat(l), flat(r), flat(v));
+    assert!((r.dot(n) - l.dot(n)).abs() < 1e-12, "R is at θ to N");
+
+    let mut page = Page::new(640.0, 380.0).view(DVec2::new(-2.4, -0.3), DVec2::new(2.4, 2.5));
+    let p = DVec2::ZERO;
+    // the surface, hatched below
+    page.segment(
+        DVec2::new(-2.2, 0.0),
+        DVec2::new(2.2, 0.0),
+        &Stroke::new(palette::BLACK).width(2.0),
+    );
+    for k in 0..22 {
+        let x = -2.1 + 0.2 * f64::from(k);
+        if (-0.1..0.3).contains(&x) {
+            continue; // room for P's label
+        }
+        page.segment(
+            DVec2::new(x, 0.0),
+            DVec2::new(x - 0.15, -0.15),
+            &Stroke::new(palette::GREY).width(1.0),
+        );
+    }
+    let thin = Stroke::new(palette::BLACK).width(1.2);
+    page.angle_arc(p, n2, l2, 56.0, &thin, Some("θ"));
+    page.angle_arc(p, r2, n2, 56.0, &thin, Some("θ"));
+    page.angle_arc(p, v2, r2, 100.0, &thin, Some("α"));
+    let len = 1.6;
+    page.arrow(p, len * n2, &vector(N_COLOR));
+    page.label(len * n2, "N", Anchor::N);
+    page.arrow(p, len * l2, &vector(LIGHT_COLOR));
+    page.label(len * l2, "L", Anchor::pointing(l2));
+    page.arrow(p, len * r2, &vector(REFLECT_COLOR));
+    page.label(len * r2, "R", Anchor::pointing(r2));
+    page.arrow(p, len * v2, &vector(EYE_COLOR));
+    page.label(len * v2, "V", Anchor::pointing(v2));
+    sun(&mut page, 1.95 * l2);
+    eye(&mut page, 2.0 * v2, -v2);
+    page.point(p, palette::BLACK);
+    page.label(p, "P", Anchor::S);
+
+    text_block(
+        &mut page,
+        DVec2::new(-2.35, 2.35),
+        0.25,
+        &[
+            ("k_d·(N·L) + k_s·(R·V)^p", palette::BLACK),
+            ("N·L = cos θ,  R·V = cos α", palette::BLACK),
+            ("R = 2(N·L)N − L", palette::BLACK),
+        ],
+    );
+    Figure::new(
+        "vectors",
+        "At a surface point P: the normal N, the direction L to the light, its mirror image R = 2(N·L)N − L at the same angle θ on the other side of N, and the direction V to the eye at angle α from R. Diffuse light goes with N·L = cos θ, the highlight with (R·V)^p = cos^p α.",
+        page,
+    )
+}
+
+/// The refracted direction of unit `d` entering a medium of index `n` through a surface with
+/// unit normal `normal` (against `d`), by Snell's law; `None` for total internal reflection.
+/// Chapter 06 teaches it.
+fn refract(d: DVec3, normal: DVec3, n: f64) -> Option<DVec3> {
+    let eta = 1.0 / n;
+    let cos_i = -d.dot(normal);
+    let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+    (k >= 0.0).then(|| eta * d + (eta * cos_i - k.sqrt()) * normal)
+}
+
+/// An X: where a shadow ray is blocked.
+fn cross(page: &mut Page, p: DVec2) {
+    let x = 6.0 / page.scale();
+    for d in [DVec2::new(x, x), DVec2::new(x, -x)] {
+        page.segment(p - d, p + d, &Stroke::new(palette::BLACK).width(3.0));
+    }
+}
+
+/// At one primary hit of the scene: the shadow rays, the reflected ray and the refracted ray.
+fn other_rays() -> Figure {
+    let world = spheres();
+    // a pixel that sees the floor where one light is blocked
+    let ray = world.camera.pixel_ray(155, 115, world.width, world.height);
+    let (hit, object) = world
+        .closest_hit(&ray, Interval::FORWARD)
+        .expect("the pixel sees the floor");
+    assert!(
+        matches!(object.shape, Shape::Plane(_)),
+        "the pixel sees the floor"
+    );
+    let n = hit.normal;
+
+    // Left: the plane of the primary ray and N, which holds the reflected and refracted rays.
+    let view = SideView::new(hit.point, ray.direction);
+    let left = DVec2::new(7.0, 0.0); // where P is drawn
+    let at = |q: DVec3| left + view.at(q) - DVec2::new(0.0, hit.point.y);
+    let p = at(hit.point);
+    let mut page = Page::new(1000.0, 430.0)
+        .margin(12.0)
+        .view(DVec2::new(0.0, -2.4), DVec2::new(23.0, 6.8));
+    let floor = Stroke::new(palette::GREY).width(2.5);
+    page.segment(DVec2::new(0.0, 0.0), DVec2::new(10.4, 0.0), &floor);
+    page.label(
+        DVec2::new(5.2, 6.4),
+        "in the plane of the primary ray and N",
+        Anchor::Center,
+    );
+    let eye_at = at(ray.origin);
+    page.segment(eye_at, p, &Stroke::new(RAY_COLOR).width(2.0));
+    page.arrow(
+        eye_at,
+        eye_at + 0.5 * (p - eye_at),
+        &Stroke::new(RAY_COLOR).width(2.0),
+    );
+    eye(&mut page, eye_at, p - eye_at);
+    page.label(
+        eye_at + 0.45 * (p - eye_at) + DVec2::new(0.0, 0.3),
+        "primary ray",
+        Anchor::N,
+    );
+    let reflected = reflect(-ray.direction, n);
+    let refracted = refract(ray.direction, n, 1.5).expect("entering glass refracts");
+    let len = 2.4;
+    let tip = p + len * view.dir(reflected);
+    page.arrow(p, tip, &vector(REFLECT_COLOR));
+    page.label(tip, "reflected", Anchor::N);
+    let tip = p + len * view.dir(refracted);
+    page.arrow(p, tip, &vector(REFRACT_COLOR));
+    page.label(tip, "refracted, n = 1.5", Anchor::S);
+    page.arrow(p, p + 1.4 * view.dir(n), &vector(N_COLOR));
+    page.label(p + 1.4 * view.dir(n), "N", Anchor::N);
+    page.point(p, palette::BLACK);
+    page.label(p, "P", Anchor::SW);
+
+    // Right: each shadow ray in the vertical plane through it, turned about N into the page,
+    // lights to the camera's left on the left.
+    let q = DVec2::new(17.0, 0.0); // where P is drawn
+    page.segment(DVec2::new(11.2, 0.0), DVec2::new(23.0, 0.0), &floor);
+    page.segment(
+        DVec2::new(10.8, -2.2),
+        DVec2::new(10.8, 6.6),
+        &Stroke::new(palette::LIGHT_GREY).width(1.5),
+    );
+    page.label(
+        DVec2::new(17.0, 6.4),
+        "shadow rays, each in its vertical plane",
+        Anchor::Center,
+    );
+    let mut blocked_lights = 0;
+    for (i, light) in world.lights.iter().enumerate() {
+        let to_light = light.position - hit.point;
+        let distance = to_light.length();
+        let shadow = Ray::new(hit.point, to_light / distance);
+        let side = if to_light.dot(world.camera.right) < 0.0 {
+            -1.0
+        } else {
+            1.0
+        };
+        let plane = SideView::new(hit.point, to_light);
+        let at =
+            |x: DVec3| q + DVec2::new(side, 1.0) * (plane.at(x) - DVec2::new(0.0, hit.point.y));
+        let at_light = at(light.position);
+        match world.closest_hit(&shadow, Interval::new(1e-9 * distance, distance)) {
+            None => {
+                page.segment(q, at_light, &Stroke::new(LIGHT_COLOR).width(2.0));
+                page.label(
+                    q + 0.5 * (at_light - q),
+                    "S = 1",
+                    Anchor::pointing(DVec2::new(side, 0.0)),
+                );
+            }
+            Some((block, by)) => {
+                blocked_lights += 1;
+                let at_block = at(block.point);
+                if let Shape::Sphere(s) = &by.shape {
+                    // the blocker where the vertical plane cuts it
+                    let off = plane.off(s.center);
+                    let fill = colour(world.materials[by.material].kd);
+                    page.circle_alpha(
+                        at(s.center - off * plane.across),
+                        (s.radius * s.radius - off * off).sqrt(),
+                        Some(fill.with_alpha(0.35)),
+                        Some(&Stroke::new(fill).width(2.0)),
+                    );
+                }
+                page.segment(q, at_block, &Stroke::new(LIGHT_COLOR).width(2.0));
+                page.segment(
+                    at_block,
+                    at_light,
+                    &Stroke::new(LIGHT_COLOR).width(1.5).dashed(),
+                );
+                cross(&mut page, at_block);
+                page.label(
+                    at_block + 0.5 * (at_light - at_block),
+                    "S = 0",
+                    Anchor::pointing(DVec2::new(side, -1.0)),
+                );
+                let name = &world.materials[by.material].name;
+                text_block(
+                    &mut page,
+                    DVec2::new(at_block.x - 0.3, -0.5),
+                    0.45,
+                    &[
+                        ("blocked by", palette::BLACK),
+                        (&format!("the {name} sphere"), palette::BLACK),
+                    ],
+                );
+            }
+        }
+        sun(&mut page, at_light);
+        page.label(
+            at_light - DVec2::new(side * 0.35, 0.0),
+            &format!("light {}", i + 1),
+            Anchor::pointing(DVec2::new(-side, 0.0)),
+        );
+    }
+    assert_eq!(blocked_lights, 1, "one light is blocked, one is not");
+    page.arrow(q, q + 1.4 * DVec2::Y, &vector(N_COLOR));
+    page.label(q + 1.4 * DVec2::Y, "N", Anchor::N);
+    page.point(q, palette::BLACK);
+    page.label(q, "P", Anchor::S);
+
+    Figure::new(
+        "other-rays",
+        "The other rays at one point P where a primary ray of the chapter's scene meets the floor. Left: the reflected ray (chapter 05) and the ray refracted into glass of n = 1.5 (chapter 06) lie in the plane of the primary ray and N. Right: a shadow ray to each light (chapter 04), each drawn in its own vertical plane; the blue sphere blocks the second.",
+        page,
+    )
+}
+
+/// The scene with each term of the local model on its own, and their sum.
+fn terms() -> Figure {
+    let mut world = spheres();
+    (world.width, world.height) = (208, 117);
+    let term = |pick: fn(&ShadingTerms) -> DVec3| {
+        render_with(&world, &QUIET, |ray| {
+            shade(&world, ray).map_or(DVec3::ZERO, |t| pick(&t))
+        })
+        .expect("a small render")
+    };
+    let ambient = render(&world, Terms::Ambient, &QUIET).expect("a small render");
+    let diffuse = term(|t| t.diffuse);
+    let specular = term(|t| t.specular);
+    let sum = render(&world, Terms::All, &QUIET).expect("a small render");
+    for (i, &l) in sum.pixels().iter().enumerate() {
+        let parts = ambient.pixels()[i] + diffuse.pixels()[i] + specular.pixels()[i];
+        assert!(
+            (parts - l).abs().max_element() < 1e-12,
+            "L is the sum of its terms"
+        );
+    }
+    let panels = [
+        (&ambient, "ambient", "k_a·I_a"),
+        (&diffuse, "diffuse", "Σ I_i·k_d·(N·L_i)"),
+        (&specular, "specular", "Σ I_i·k_s·(R_i·V)^p"),
+        (&sum, "their sum", "L"),
+    ];
+    let (pw, ph) = (f64::from(world.width), f64::from(world.height));
+    let (gap, side, bottom) = (32.0, 12.0, 56.0);
+    let mut page = Page::new(4.0 * pw + 3.0 * gap + 2.0 * side, ph + bottom + 12.0);
+    for (k, (image, name, formula)) in panels.iter().enumerate() {
+        let x = side + k as f64 * (pw + gap);
+        let (min, max) = (DVec2::new(x, bottom), DVec2::new(x + pw, bottom + ph));
+        page.image(min, max, image.width(), image.height(), &image.to_srgb8());
+        page.label(DVec2::new(x + pw / 2.0, bottom), name, Anchor::S);
+        page.label(DVec2::new(x + pw / 2.0, bottom - 22.0), formula, Anchor::S);
+        if k > 0 {
+            let sign = if k == panels.len() - 1 { "=" } else { "+" };
+            page.label_sized(
+                DVec2::new(x - gap / 2.0, bottom + ph / 2.0),
+                sign,
+                Anchor::Center,
+                24.0,
+                palette::BLACK,
+            );
+        }
+    }
+    Figure::new(
+        "terms",
+        "The chapter's scene term by term: the ambient term, the diffuse term and the specular term each on its own, and their sum L, the local model.",
+        page,
+    )
+}
+
+/// A scene with one shiny sphere, for the exponent sweep.
+const SHINY: &str = r#"
+# ANCHOR: shiny
+# One shiny sphere, lit from the upper left.
+[image]
+width = 150
+height = 150
+
+[camera]
+look_from = [0, 0, 4]
+look_at = [0, 0, 0]
+vfov = 34
+
+[ambient]
+intensity = 0.1
+
+[[lights]]
+position = [-3, 4, 5]
+intensity = 1
+
+[materials.shiny]
+kd = [0.15, 0.3, 0.65]
+ks = 0.6
+p = 32
+
+[[objects]]
+sphere = { center = [0, 0, 0], radius = 1 }
+material = "shiny"
+# ANCHOR_END: shiny
+"#;
+
+/// The highlight of one sphere as the Phong exponent p grows.
+fn exponent() -> Figure {
+    let scene = raystep_scene::parse(SHINY, "shiny.toml").expect("the sweep's scene parses");
+    let world = World::from_scene(&scene, "shiny.toml").expect("the sweep's scene builds");
+    let exponents = [2.0, 8.0, 32.0, 128.0, 512.0];
+    let (w, h) = (world.width, world.height);
+    let gap = 16.0;
+    let (pw, ph) = (f64::from(w), f64::from(h));
+    let width = 5.0 * pw + 4.0 * gap + 2.0 * 12.0;
+    let mut page = Page::new(width, ph + 48.0);
+    for (k, &p) in exponents.iter().enumerate() {
+        let mut world = world.clone();
+        for m in &mut world.materials {
+            m.p = p;
+        }
+        let image = render(&world, Terms::All, &QUIET).expect("a small render");
+        let x = 12.0 + k as f64 * (pw + gap);
+        page.image(
+            DVec2::new(x, 36.0),
+            DVec2::new(x + pw, 36.0 + ph),
+            w,
+            h,
+            &image.to_srgb8(),
+        );
+        page.label(
+            DVec2::new(x + pw / 2.0, 36.0),
+            &format!("p = {p}"),
+            Anchor::S,
+        );
+    }
+    Figure::new(
+        "exponent",
+        "One sphere with ks = 0.6 and the Phong exponent p from 2 to 512: the larger p, the smaller and sharper the highlight, from a dull plastic to a polished one.",
+        page,
+    )
 }

@@ -104,4 +104,3 @@ pub fn render_with(
         )
     })
 }
-// ANCHOR_END: render

@@ -67,6 +67,18 @@ fn line_sign() -> Figure {
             }
         },
     );
+    // a small RGB image (a render, say), stretched over a world rectangle
+    let (w, h) = (16u32, 8u32);
+    let rgb: Vec<u8> = (0..w * h)
+        .flat_map(|i| {
+            [
+                (i % w * 255 / (w - 1)) as u8,
+                (i / w * 255 / (h - 1)) as u8,
+                160,
+            ]
+        })
+        .collect();
+    page.image(DVec2::new(0.6, 2.05), DVec2::new(2.2, 2.65), w, h, &rgb);
     page.text_page(
         DVec2::new(450.0, 20.0),
         "the sign of f(x, y) = n · (p − P_0)",

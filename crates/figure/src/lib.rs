@@ -5,7 +5,8 @@
 //! primitives — and its diagram binary hands them to [`diagram_main`]. [`render`] turns a figure
 //! into bytes: the page's SVG source is parsed by usvg with only the embedded DejaVu Sans font,
 //! so labels become outlines; the SVG file is written back from that tree and the PNG is the
-//! same tree rasterised at 2× on white.
+//! same tree rasterised at 2× on white. Renders shown in a figure ([`Page::image`]) are
+//! embedded in the SVG as PNG data.
 //!
 //! # Label markup
 //! Labels ([`Page::label`] and friends) take a little markup: `_` makes the next character, or
@@ -25,15 +26,20 @@
 //! assert!(rendered.png.starts_with(b"\x89PNG"));
 //! ```
 
+mod chart;
 mod cli;
 mod error;
 mod field;
+mod image;
 mod output;
 mod page;
 mod projection;
 mod style;
 mod text;
 
+pub use chart::{ChartArea, ChartError, chart};
+/// plotters, re-exported so chapters draw charts with the kit's version.
+pub use plotters;
 pub use raystep_core::{DVec2, DVec3};
 
 pub use cli::diagram_main;

@@ -2,12 +2,15 @@
 //!
 //! * `raystep figures` draws every lecture figure into `book/src/figures/`
 //!   (`--check` compares instead of writing);
+//! * `raystep measure` times the renders behind the charts (slow) and
+//!   writes CSV beside the figures;
 //! * `raystep render SCENE.toml` renders a scene file to a PNG;
 //! * `raystep check ch01` runs a chapter's tests in student mode and says,
 //!   exercise by exercise, what passes.
 
 mod check;
 mod figures;
+mod measure;
 mod render;
 mod workspace;
 
@@ -41,6 +44,15 @@ enum Command {
         /// Write nothing; fail and name every figure file that differs, is missing or is extra.
         #[arg(long)]
         check: bool,
+    },
+    /// Time the renders behind the charts (slow) and write their CSV beside the figures.
+    Measure {
+        /// Renders timed per data point; the median is kept.
+        #[arg(long, default_value_t = 11)]
+        repeats: usize,
+        /// The folder that holds one folder per chapter [default: <workspace>/book/src/figures].
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
     },
     /// Render a scene file (TOML) to a PNG.
     Render {
@@ -192,6 +204,7 @@ fn main() -> ExitCode {
             format: format.into(),
             check,
         }),
+        Command::Measure { repeats, out } => measure::run(&measure::Options { repeats, out }),
         Command::Render {
             scene,
             out,
