@@ -1,0 +1,102 @@
+//! `raystep render` from the outside: a PNG for a good scene, one clear
+//! error line and no file for a bad one.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn raystep(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_raystep"))
+        .args(args)
+        .output()
+        .expect("raystep runs")
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("raystep-render")
+        .join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn scene(chapter_scene: &str) -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../chapters")
+        .join(chapter_scene)
+        .display()
+        .to_string()
+}
+
+/// The width and height in a PNG's header.
+fn png_size(bytes: &[u8]) -> (u32, u32) {
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    let be = |i: usize| u32::from_be_bytes(bytes[i..i + 4].try_into().unwrap());
+    (be(16), be(20))
+}
+
+#[test]
+fn renders_a_chapter_scene_at_the_asked_size() {
+    let dir = scratch("good");
+    let out = dir.join("spheres.png");
+    let run = raystep(&[
+        "render",
+        &scene("ch03-illumination/scenes/spheres.toml"),
+        "--out",
+        out.to_str().unwrap(),
+        "--size",
+        "64x36",
+        "--threads",
+        "2",
+    ]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert_eq!(png_size(&fs::read(&out).unwrap()), (64, 36));
+    assert!(String::from_utf8_lossy(&run.stdout).contains("ch03 renderer"));
+    // chapter 04's scene gets chapter 04's tracer (with shadows)
+    let out4 = dir.join("two.png");
+    let run = raystep(&[
+        "render",
+        &scene("ch04-shadows/scenes/two-lights.toml"),
+        "--out",
+        out4.to_str().unwrap(),
+        "--size",
+        "32x18",
+    ]);
+    assert!(run.status.success());
+    assert!(String::from_utf8_lossy(&run.stdout).contains("ch04 renderer"));
+}
+
+#[test]
+fn a_bad_scene_is_one_error_line_and_no_file() {
+    let dir = scratch("bad");
+    let bad = dir.join("bad.toml");
+    fs::write(&bad, "[camera]\nlook_from = [0, 0, 5]\nlook_at = [0, 0, 0]\n\n[[objects]]\nsphere = { center = [0, 0, 0], radius = -1 }\n").unwrap();
+    let out = dir.join("bad.png");
+    let run = raystep(&[
+        "render",
+        bad.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!run.status.success());
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.contains("bad.toml:6:"), "{stderr}");
+    assert!(
+        stderr.contains("objects[0].sphere.radius: must be positive, got -1"),
+        "{stderr}"
+    );
+    assert!(!out.exists());
+    for args in [&["--size", "0x10"][..], &["--threads", "0"]] {
+        let mut all = vec!["render", bad.to_str().unwrap()];
+        all.extend_from_slice(args);
+        let run = raystep(&all);
+        assert!(!run.status.success());
+        assert_eq!(String::from_utf8_lossy(&run.stderr).lines().count(), 1);
+    }
+}
