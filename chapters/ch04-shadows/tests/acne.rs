@@ -20,9 +20,10 @@ const STRATEGIES: [(&str, Offset); 6] = [
     // others lie half below their surface: most pixels get acne.
     ("TMin(0)", Offset::TMin(0.0)),
     // ε a fixed distance of 1e-4: at scale 1e-3 that is a tenth of a scene
-    // unit, so blockers that close are skipped (leaks near the spheres'
-    // contact shadows); at larger scales it is far above the rounding
-    // error and clean.
+    // unit. Still no leaks here: a ray that enters a sphere before ε leaves
+    // it after ε, and that exit counts as a hit; only a blocker crossed
+    // entirely within ε is lost (the thin sheet of tests/normal_offset.rs).
+    // At larger scales ε is far above the rounding error: clean.
     ("TMin(1e-4)", Offset::TMin(1e-4)),
     // ε = 1e-12: below the rounding error of points at scale 1e4 (about
     // 1e-12 there), so those points find their own surface again (acne).
