@@ -90,17 +90,6 @@ fn side_normal(plane: &Plane) -> DVec2 {
     plane.normal.truncate()
 }
 
-/// A hollow dot: a hit the ray does not accept.
-fn hollow_point(page: &mut Page, p: DVec2, color: Color) {
-    let r = 4.5 / page.scale();
-    page.circle(
-        p,
-        r,
-        Some(palette::WHITE),
-        Some(&Stroke::new(color).width(2.0)),
-    );
-}
-
 /// A ray from P₀ along D meets a tilted plane at the t that `ray_plane` computes.
 fn ray_plane_figure() -> Figure {
     let (a, b) = (DVec2::new(5.0, -0.9), DVec2::new(6.2, 4.4));
@@ -238,7 +227,7 @@ fn parallel_and_behind() -> Figure {
     page.label(p0 + d, "D", Anchor::E);
     page.point(p0, palette::BLACK);
     page.label(p0, "P_0", Anchor::E);
-    hollow_point(&mut page, behind, palette::BLACK);
+    page.hollow_point(behind, palette::BLACK);
     page.label(
         behind,
         &format!("behind the origin: t = {}", fmt(t)),

@@ -48,37 +48,6 @@ fn colour(c: DVec3) -> Color {
     Color::rgb(r, g, b)
 }
 
-/// A hollow dot: a hit the loop does not keep.
-fn hollow_point(page: &mut Page, p: DVec2, color: Color) {
-    let r = 4.5 / page.scale();
-    page.circle(
-        p,
-        r,
-        Some(palette::WHITE),
-        Some(&Stroke::new(color).width(2.0)),
-    );
-}
-
-/// A small sun: a light source.
-fn sun(page: &mut Page, p: DVec2) {
-    let r = 7.0 / page.scale();
-    for k in 0..8 {
-        let a = f64::from(k) * std::f64::consts::FRAC_PI_4;
-        let d = DVec2::new(a.cos(), a.sin());
-        page.segment(
-            p + 1.4 * r * d,
-            p + 2.1 * r * d,
-            &Stroke::new(LIGHT_COLOR).width(2.0),
-        );
-    }
-    page.circle(
-        p,
-        r,
-        Some(palette::YELLOW),
-        Some(&Stroke::new(LIGHT_COLOR).width(2.0)),
-    );
-}
-
 /// A small eye: an almond with a pupil, looking along `dir`.
 fn eye(page: &mut Page, p: DVec2, dir: DVec2) {
     let s = 9.0 / page.scale();
@@ -96,19 +65,6 @@ fn eye(page: &mut Page, p: DVec2, dir: DVec2) {
     );
     page.circle(p + 0.35 * s * u, 0.42 * s, Some(EYE_COLOR), None);
     page.circle(p + 0.35 * s * u, 0.18 * s, Some(palette::BLACK), None);
-}
-
-/// The lines of a text block, top to bottom from `top_left`, `step` world units apart.
-fn text_block(page: &mut Page, top_left: DVec2, step: f64, lines: &[(&str, Color)]) {
-    for (k, (text, color)) in lines.iter().enumerate() {
-        page.label_sized(
-            top_left - DVec2::new(0.0, step * k as f64),
-            text,
-            Anchor::E,
-            16.0,
-            *color,
-        );
-    }
 }
 
 /// A 2D side view of 3D space: the vertical plane through `origin` that contains the horizontal
@@ -226,7 +182,7 @@ fn basic_idea() -> Figure {
                         &Stroke::new(palette::GREY).width(1.0).dashed(),
                     );
                     for t in farther {
-                        hollow_point(&mut page, view.at(ray.at(t)), palette::GREY);
+                        page.hollow_point(view.at(ray.at(t)), palette::GREY);
                     }
                 }
                 page.segment(from, at, &Stroke::new(RAY_COLOR).width(1.5));
@@ -262,29 +218,29 @@ fn basic_idea() -> Figure {
     page.label(eye_at + DVec2::new(0.0, -0.12), "eye", Anchor::S);
     page.label(centre + up + 0.5 * depth, "image plane", Anchor::N);
     let x = 2.4;
-    text_block(
-        &mut page,
+    page.text_lines(
         DVec2::new(x, -0.5),
         0.3,
+        16.0,
         &[(
             "for each pixel on screen: shoot a ray through it",
             palette::BLACK,
         )],
     );
-    text_block(
-        &mut page,
+    page.text_lines(
         DVec2::new(x + 0.3, -0.8),
         0.3,
+        16.0,
         &[
             ("for each object: does the ray hit it?", palette::BLACK),
             ("keep the closest hit (dot)", palette::BLACK),
             ("shade it: the pixel's colour", palette::BLACK),
         ],
     );
-    text_block(
-        &mut page,
+    page.text_lines(
         DVec2::new(x, -1.75),
         0.3,
+        16.0,
         &[(
             "blue dashed: a miss;  hollow dot: a farther hit, dropped",
             palette::GREY,
@@ -343,15 +299,15 @@ fn vectors() -> Figure {
     page.label(len * r2, "R", Anchor::pointing(r2));
     page.arrow(p, len * v2, &vector(EYE_COLOR));
     page.label(len * v2, "V", Anchor::pointing(v2));
-    sun(&mut page, 1.95 * l2);
+    page.sun(1.95 * l2);
     eye(&mut page, 2.0 * v2, -v2);
     page.point(p, palette::BLACK);
     page.label(p, "P", Anchor::S);
 
-    text_block(
-        &mut page,
+    page.text_lines(
         DVec2::new(-2.35, 2.35),
         0.25,
+        16.0,
         &[
             ("k_d·(N·L) + k_s·(R·V)^p", palette::BLACK),
             ("N·L = cos θ,  R·V = cos α", palette::BLACK),
@@ -503,10 +459,10 @@ fn other_rays() -> Figure {
                     Anchor::pointing(DVec2::new(side, -1.0)),
                 );
                 let name = &world.materials[by.material].name;
-                text_block(
-                    &mut page,
+                page.text_lines(
                     DVec2::new(at_block.x - 0.3, -0.5),
                     0.45,
+                    16.0,
                     &[
                         ("blocked by", palette::BLACK),
                         (&format!("the {name} sphere"), palette::BLACK),
@@ -514,7 +470,7 @@ fn other_rays() -> Figure {
                 );
             }
         }
-        sun(&mut page, at_light);
+        page.sun(at_light);
         page.label(
             at_light - DVec2::new(side * 0.35, 0.0),
             &format!("light {}", i + 1),

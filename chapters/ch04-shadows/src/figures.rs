@@ -30,7 +30,6 @@ pub fn all() -> Vec<Figure> {
 /// Colours shared by the chapter's figures (N, rays and lights as in
 /// chapters 01–03).
 const N_COLOR: Color = palette::VERMILION;
-const LIGHT_COLOR: Color = palette::ORANGE;
 const LIT_COLOR: Color = palette::GREEN;
 const BLOCKED_COLOR: Color = palette::VERMILION;
 const ACNE_COLOR: Color = palette::VERMILION;
@@ -128,37 +127,6 @@ fn percent(f: f64) -> String {
     }
 }
 
-/// A hollow dot: a hit the ray does not count.
-fn hollow_point(page: &mut Page, p: DVec2, color: Color) {
-    let r = 4.5 / page.scale();
-    page.circle(
-        p,
-        r,
-        Some(palette::WHITE),
-        Some(&Stroke::new(color).width(2.0)),
-    );
-}
-
-/// A small sun: a light source.
-fn sun(page: &mut Page, p: DVec2) {
-    let r = 7.0 / page.scale();
-    for k in 0..8 {
-        let a = f64::from(k) * std::f64::consts::FRAC_PI_4;
-        let d = DVec2::new(a.cos(), a.sin());
-        page.segment(
-            p + 1.4 * r * d,
-            p + 2.1 * r * d,
-            &Stroke::new(LIGHT_COLOR).width(2.0),
-        );
-    }
-    page.circle(
-        p,
-        r,
-        Some(palette::YELLOW),
-        Some(&Stroke::new(LIGHT_COLOR).width(2.0)),
-    );
-}
-
 /// A filled rectangle from `min` to `max`.
 fn rect(page: &mut Page, min: DVec2, max: DVec2, fill: Option<Color>, stroke: Option<&Stroke>) {
     page.polygon(
@@ -166,20 +134,6 @@ fn rect(page: &mut Page, min: DVec2, max: DVec2, fill: Option<Color>, stroke: Op
         fill,
         stroke,
     );
-}
-
-/// The lines of a text block, top to bottom from `top_left`, `step` world
-/// units apart.
-fn text_block(page: &mut Page, top_left: DVec2, step: f64, size: f64, lines: &[(&str, Color)]) {
-    for (k, (text, color)) in lines.iter().enumerate() {
-        page.label_sized(
-            top_left - DVec2::new(0.0, step * k as f64),
-            text,
-            Anchor::E,
-            size,
-            *color,
-        );
-    }
 }
 
 /// The side view's scene: a floor, a ball, and two lights, all in the
@@ -307,7 +261,7 @@ fn shadow_rays() -> Figure {
                 LIT_COLOR,
             ));
         }
-        sun(&mut page, to);
+        page.sun(to);
         let (side, shift) = if to.x < 0.0 {
             (Anchor::E, 0.4)
         } else {
@@ -330,7 +284,7 @@ fn shadow_rays() -> Figure {
         palette::BLACK,
     )];
     block.extend(lines.iter().map(|(line, color)| (line.as_str(), *color)));
-    text_block(&mut page, DVec2::new(-4.5, 5.3), 0.36, 16.0, &block);
+    page.text_lines(DVec2::new(-4.5, 5.3), 0.36, 16.0, &block);
     Figure::new(
         "shadow-rays",
         "At a floor point P, one shadow ray per light: the ray to light 1 reaches it (S₁ = 1); the ray to light 2 meets the ball first (S₂ = 0), and occluded stops at that blocker without looking farther.",
@@ -512,8 +466,7 @@ fn acne() -> Figure {
             });
             assert!(all_clean, "the scale-aware offset is right at every scale");
             let scales = format!("scales {}, 1 and {}", sci(tiny), sci(huge));
-            text_block(
-                &mut page,
+            page.text_lines(
                 DVec2::new(x, map_y - 14.0),
                 17.0,
                 14.0,
@@ -534,7 +487,7 @@ fn acne() -> Figure {
             if hidden {
                 lines.push(("too few to see above", palette::BLACK));
             }
-            text_block(&mut page, DVec2::new(x, map_y - 14.0), 17.0, 14.0, &lines);
+            page.text_lines(DVec2::new(x, map_y - 14.0), 17.0, 14.0, &lines);
         }
     }
     page.label_sized(
@@ -819,8 +772,8 @@ fn offsets() -> Figure {
                 page.segment(o, skip, &Stroke::new(palette::LIGHT_GREY).width(9.0));
                 page.segment(o, skip, &ray_stroke.dashed());
                 page.arrow(skip, end, &ray_stroke);
-                hollow_point(&mut page, cross(0.0), palette::BLACK);
-                hollow_point(&mut page, cross(drawn_blocker), LEAK_COLOR);
+                page.hollow_point(cross(0.0), palette::BLACK);
+                page.hollow_point(cross(drawn_blocker), LEAK_COLOR);
                 page.label_sized(
                     skip - DVec2::new(0.15, 0.0),
                     "t < ε: ignored",
@@ -906,7 +859,7 @@ fn offsets() -> Figure {
             }
         }
         let lines: Vec<(&str, Color)> = lines.iter().map(|(t, c)| (t.as_str(), *c)).collect();
-        text_block(&mut page, at(-2.3, -1.25), 0.4, 15.0, &lines);
+        page.text_lines(at(-2.3, -1.25), 0.4, 15.0, &lines);
         if k == 0 {
             page.label_sized(
                 at(-2.3, 0.0),
@@ -1027,13 +980,7 @@ fn offsets() -> Figure {
         ),
     ];
     let lines: Vec<(&str, Color)> = lines.iter().map(|l| (l.as_str(), palette::BLACK)).collect();
-    text_block(
-        &mut page,
-        DVec2::new(x0 - 0.3, axis_y - 0.95),
-        0.42,
-        15.0,
-        &lines,
-    );
+    page.text_lines(DVec2::new(x0 - 0.3, axis_y - 0.95), 0.42, 15.0, &lines);
     Figure::new(
         "offsets",
         &format!(

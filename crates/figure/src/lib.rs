@@ -30,6 +30,7 @@ mod chart;
 mod cli;
 mod error;
 mod field;
+mod glyphs;
 mod image;
 mod output;
 mod page;
