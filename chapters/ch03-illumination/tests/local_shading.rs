@@ -1,7 +1,7 @@
 //! Exercise 3: the local illumination model.
 use ch03::{DVec3, LightSample, Material, shading_terms};
 use proptest::prelude::*;
-use raystep_check::{Table, seeded, vec3};
+use raystep_check::{Table, seeded, unit_vector, vec3};
 
 fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
@@ -61,12 +61,6 @@ fn shading_table() {
     insta::assert_snapshot!(table.to_string());
 }
 
-fn unit() -> impl Strategy<Value = DVec3> {
-    (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64)
-        .prop_filter("not too short", |(x, y, z)| x * x + y * y + z * z > 0.01)
-        .prop_map(|(x, y, z)| v(x, y, z).normalize())
-}
-
 proptest! {
     #![proptest_config(seeded(256))]
 
@@ -74,7 +68,7 @@ proptest! {
     /// turning the light toward the normal, or raising kd, never darkens.
     #[test]
     fn non_negative_and_monotone_in_kd_n_dot_l(
-        n in unit(), l in unit(), eye in unit(), kd in 0.0..1.0f64, ks in 0.0..1.0f64, p in 1.0..100.0f64
+        n in unit_vector(), l in unit_vector(), eye in unit_vector(), kd in 0.0..1.0f64, ks in 0.0..1.0f64, p in 1.0..100.0f64
     ) {
         let m = material(kd, ks, p);
         let t = shading_terms(&m, n, eye, DVec3::splat(0.2), &[light(l, 1.0)]);

@@ -1,7 +1,7 @@
 //! Exercise 1: where a ray meets a sphere.
 use ch03::{DVec3, Interval, Ray, Sphere};
 use proptest::prelude::*;
-use raystep_check::{Table, num, seeded, vec3};
+use raystep_check::{Table, num, seeded, unit_vector, vec3};
 
 fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
@@ -40,12 +40,6 @@ fn sphere_hit_table() {
         ]);
     }
     insta::assert_snapshot!(table.to_string());
-}
-
-fn unit_vector() -> impl Strategy<Value = DVec3> {
-    (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64)
-        .prop_filter("not too short", |(x, y, z)| x * x + y * y + z * z > 0.01)
-        .prop_map(|(x, y, z)| v(x, y, z).normalize())
 }
 
 proptest! {

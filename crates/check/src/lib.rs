@@ -13,5 +13,5 @@ mod table;
 
 pub use image_compare::{Tolerance, assert_image_matches, diff_dir};
 pub use round::{num, num_places, vec2, vec3};
-pub use seeded::seeded;
+pub use seeded::{seeded, unit_vector};
 pub use table::Table;
