@@ -40,6 +40,15 @@ pub fn acne_chart() -> Result<Figure, ChartError> {
     )
 }
 
+/// A y-axis label: the floor reads "0", the rest as powers of ten.
+fn fraction_label(y: &f64) -> String {
+    if *y <= FLOOR {
+        "0".to_string()
+    } else {
+        format!("{y:.0e}")
+    }
+}
+
 fn wrong(row: &AcneRow) -> f64 {
     (row.acne + row.leaks).max(FLOOR)
 }
@@ -72,13 +81,7 @@ fn draw(area: &raystep_figure::ChartArea, rows: &[AcneRow]) -> Result<(), ChartE
         .x_desc("scale")
         .y_desc("acne + leaks (fraction; 0 at the bottom)")
         .x_label_formatter(&|x| format!("{x:.0e}"))
-        .y_label_formatter(&|y| {
-            if *y <= FLOOR {
-                "0".to_string()
-            } else {
-                format!("{y:.0e}")
-            }
-        })
+        .y_label_formatter(&fraction_label)
         .label_style(label_style)
         .light_line_style(WHITE)
         .draw()?;
@@ -107,13 +110,7 @@ fn draw(area: &raystep_figure::ChartArea, rows: &[AcneRow]) -> Result<(), ChartE
         .configure_mesh()
         .x_desc("render time, ms (160×90, one thread)")
         .y_desc("acne + leaks (fraction; 0 at the bottom)")
-        .y_label_formatter(&|y| {
-            if *y <= FLOOR {
-                "0".to_string()
-            } else {
-                format!("{y:.0e}")
-            }
-        })
+        .y_label_formatter(&fraction_label)
         .label_style(label_style)
         .light_line_style(WHITE)
         .draw()?;

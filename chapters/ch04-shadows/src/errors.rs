@@ -1,7 +1,7 @@
 //! Measuring acne and leaks: each strategy's Sᵢ against the truth.
 use crate::{Offset, shadow_ray};
 use ch03::World;
-use raystep_core::{Interval, Ray};
+use raystep_core::{DVec3, Interval, Ray};
 
 /// How often a strategy gets a shadow wrong (see [`shadow_errors`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -37,10 +37,23 @@ fn fraction(count: usize, of: usize) -> f64 {
     }
 }
 
+/// What a strategy makes of one pixel–light pair.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// The primary ray hits nothing, or the light is behind the surface:
+    /// in shadow whatever the strategy does, nothing to judge.
+    Unjudged,
+    /// The strategy agrees with the truth.
+    Right,
+    /// The truth is lit, the strategy's shadow ray is blocked.
+    Acne,
+    /// The truth is in shadow, the strategy's shadow ray is not.
+    Leak,
+}
+
 // ANCHOR: shadow_errors
-/// Renders `world`'s visibility, one primary ray per pixel, and compares
-/// the strategy `offset` with the truth at every pixel–light pair whose
-/// primary ray hits something and whose light is in front of the surface.
+/// Judges the strategy `offset` where the primary ray `ray` first hits
+/// `world`, for the light at `light`.
 ///
 /// The truth is a shadow ray from the unmoved point that ignores the
 /// object it starts on. For spheres and planes that is exact: a convex
@@ -48,6 +61,43 @@ fn fraction(count: usize, of: usize) -> f64 {
 /// comes back), so skipping it removes the acne and nothing else. (A
 /// polygon could not be skipped so lightly in a mesh, where its neighbours
 /// are the same surface.)
+pub fn verdict(world: &World, ray: &Ray, light: DVec3, offset: Offset) -> Verdict {
+    let Some((hit, object)) = world.closest_hit(ray, Interval::FORWARD) else {
+        return Verdict::Unjudged;
+    };
+    // N facing the viewer, as the shader uses it
+    let normal = if hit.normal.dot(ray.direction) > 0.0 {
+        -hit.normal
+    } else {
+        hit.normal
+    };
+    let to_light = light - hit.point;
+    if normal.dot(to_light) <= 0.0 {
+        return Verdict::Unjudged; // behind the surface: in shadow either way
+    }
+    // the truth: every object but this one, from the point itself
+    let truth_ray = Ray::new(hit.point, to_light);
+    let truth_blocked = world.objects.iter().any(|other| {
+        !std::ptr::eq(other, object)
+            && other
+                .shape
+                .intersect(&truth_ray, Interval::new(0.0, 1.0))
+                .is_some()
+    });
+    // the strategy: every object, from where it starts the ray
+    let (strategy_ray, interval) = shadow_ray(hit.point, normal, light, offset);
+    match (
+        truth_blocked,
+        crate::occluded(world, &strategy_ray, interval),
+    ) {
+        (false, true) => Verdict::Acne,
+        (true, false) => Verdict::Leak,
+        _ => Verdict::Right,
+    }
+}
+
+/// The [`verdict`] of `offset` at every pixel–light pair of `world`, one
+/// primary ray per pixel, counted.
 pub fn shadow_errors(world: &World, offset: Offset) -> ShadowErrors {
     let mut errors = ShadowErrors::default();
     for row in 0..world.height {
@@ -55,39 +105,14 @@ pub fn shadow_errors(world: &World, offset: Offset) -> ShadowErrors {
             let ray = world
                 .camera
                 .pixel_ray(column, row, world.width, world.height);
-            let Some((hit, object)) = world.closest_hit(&ray, Interval::FORWARD) else {
-                continue;
-            };
-            // N facing the viewer, as the shader uses it
-            let normal = if hit.normal.dot(ray.direction) > 0.0 {
-                -hit.normal
-            } else {
-                hit.normal
-            };
             for light in &world.lights {
-                let to_light = light.position - hit.point;
-                if normal.dot(to_light) <= 0.0 {
-                    continue; // behind the surface: in shadow either way
+                match verdict(world, &ray, light.position, offset) {
+                    Verdict::Unjudged => continue,
+                    Verdict::Right => {}
+                    Verdict::Acne => errors.acne += 1,
+                    Verdict::Leak => errors.leaks += 1,
                 }
                 errors.pixels += 1;
-                // the truth: every object but this one, from the point itself
-                let truth_ray = Ray::new(hit.point, to_light);
-                let truth_blocked = world.objects.iter().any(|other| {
-                    !std::ptr::eq(other, object)
-                        && other
-                            .shape
-                            .intersect(&truth_ray, Interval::new(0.0, 1.0))
-                            .is_some()
-                });
-                // the strategy: every object, from where it starts the ray
-                let (strategy_ray, interval) =
-                    shadow_ray(hit.point, normal, light.position, offset);
-                let blocked = crate::occluded(world, &strategy_ray, interval);
-                match (truth_blocked, blocked) {
-                    (false, true) => errors.acne += 1,
-                    (true, false) => errors.leaks += 1,
-                    _ => {}
-                }
             }
         }
     }

@@ -10,8 +10,8 @@ use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette}
 use raystep_render::{Image, Progress, RenderOptions, srgb8};
 
 use crate::{
-    INT_SCALE, Interval, ORIGIN, Offset, ShadowErrors, Shape, TWO_LIGHTS_SCENE, World, occluded,
-    offset_scale_aware, render, scaled_scene, shadow, shadow_errors, shadow_ray,
+    INT_SCALE, Interval, ORIGIN, Offset, Shape, TWO_LIGHTS_SCENE, Verdict, World, occluded,
+    offset_scale_aware, render, scaled_scene, shadow, shadow_errors, shadow_ray, verdict,
 };
 
 /// Every figure of this chapter, in the order the lecture shows them.
@@ -299,71 +299,20 @@ fn acne_world(scale: f64, width: u32, height: u32) -> World {
     world
 }
 
-/// What a strategy gets wrong at one pixel.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Verdict {
-    /// No hit, or no light in front of the surface: nothing to judge.
-    Unjudged,
-    Right,
-    Acne,
-    Leak,
-}
-
-/// The verdict of `offset` at every pixel, row by row: the per-pixel form
-/// of [`shadow_errors`] (one light), checked against its counts.
+/// The [`verdict`] of `offset` at every pixel, row by row: the per-pixel
+/// form of [`shadow_errors`](crate::shadow_errors) for a one-light scene.
 fn error_map(world: &World, offset: Offset) -> Vec<Verdict> {
     assert_eq!(world.lights.len(), 1, "one light: one verdict a pixel");
     let light = world.lights[0].position;
-    let mut map = Vec::new();
-    let mut counts = ShadowErrors::default();
+    let mut map = Vec::with_capacity((world.width * world.height) as usize);
     for row in 0..world.height {
         for column in 0..world.width {
             let ray = world
                 .camera
                 .pixel_ray(column, row, world.width, world.height);
-            let Some((hit, object)) = world.closest_hit(&ray, Interval::FORWARD) else {
-                map.push(Verdict::Unjudged);
-                continue;
-            };
-            let normal = if hit.normal.dot(ray.direction) > 0.0 {
-                -hit.normal
-            } else {
-                hit.normal
-            };
-            let to_light = light - hit.point;
-            if normal.dot(to_light) <= 0.0 {
-                map.push(Verdict::Unjudged);
-                continue;
-            }
-            counts.pixels += 1;
-            let truth_ray = crate::Ray::new(hit.point, to_light);
-            let truth = world.objects.iter().any(|other| {
-                !std::ptr::eq(other, object)
-                    && other
-                        .shape
-                        .intersect(&truth_ray, Interval::new(0.0, 1.0))
-                        .is_some()
-            });
-            let (ray, interval) = shadow_ray(hit.point, normal, light, offset);
-            let blocked = occluded(world, &ray, interval);
-            map.push(match (truth, blocked) {
-                (false, true) => {
-                    counts.acne += 1;
-                    Verdict::Acne
-                }
-                (true, false) => {
-                    counts.leaks += 1;
-                    Verdict::Leak
-                }
-                _ => Verdict::Right,
-            });
+            map.push(verdict(world, &ray, light, offset));
         }
     }
-    assert_eq!(
-        counts,
-        shadow_errors(world, offset),
-        "the map counts what shadow_errors counts"
-    );
     map
 }
 

@@ -38,7 +38,7 @@ mod normal_offset;
 pub mod figures;
 
 pub use ch03::{Object, ShadingTerms, Shape, World};
-pub use errors::{ShadowErrors, shadow_errors};
+pub use errors::{ShadowErrors, Verdict, shadow_errors, verdict};
 pub use normal_offset::normal_offset_ray;
 pub use occluded::occluded;
 pub use offset::{Offset, shadow_ray};

@@ -1,8 +1,10 @@
 //! Exercise 2: the shadow ray lifted along the normal, next to the other
 //! two strategies.
-use ch04::{DVec3, Interval, Offset, Ray, Shape, World, normal_offset_ray, shadow_ray};
+use ch04::{DVec3, Interval, Offset, Ray, Shape, normal_offset_ray, shadow_ray};
 use raystep_check::{Table, num, vec3};
-use raystep_scene::{Object, Shape as SceneShape};
+use raystep_scene::Shape as SceneShape;
+
+mod common;
 
 fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
@@ -36,21 +38,11 @@ impl Rng {
 
 /// Chapter 03's shapes for these scene-file shapes.
 fn build(shapes: Vec<SceneShape>) -> Vec<Shape> {
-    let mut scene = raystep_scene::parse(
-        "[camera]\nlook_from = [0, 0, 1]\nlook_at = [0, 0, 0]\n",
-        "test",
-    )
-    .unwrap();
-    scene.objects = shapes
+    common::world(shapes)
+        .objects
         .into_iter()
-        .map(|shape| Object {
-            shape,
-            material: 0,
-            line: 1,
-        })
-        .collect();
-    let world = World::from_scene(&scene, "test").unwrap();
-    world.objects.into_iter().map(|o| o.shape).collect()
+        .map(|o| o.shape)
+        .collect()
 }
 
 /// How far the blocker lies beyond each surface, as a fraction of the

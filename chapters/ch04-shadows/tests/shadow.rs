@@ -3,29 +3,14 @@ use ch04::{DVec3, Hit, Light, Offset, World, render, shadow};
 use proptest::prelude::*;
 use raystep_check::{Table, Tolerance, assert_image_matches, seeded, vec3};
 use raystep_render::{Progress, RenderOptions};
-use raystep_scene::{Object, Shape};
+use raystep_scene::Shape;
 use std::path::Path;
+
+mod common;
+use common::world;
 
 fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
-}
-
-/// A world of these shapes (camera and materials unused here).
-fn world(shapes: Vec<Shape>) -> World {
-    let mut scene = raystep_scene::parse(
-        "[camera]\nlook_from = [0, 0, 1]\nlook_at = [0, 0, 0]\n",
-        "test",
-    )
-    .unwrap();
-    scene.objects = shapes
-        .into_iter()
-        .map(|shape| Object {
-            shape,
-            material: 0,
-            line: 1,
-        })
-        .collect();
-    World::from_scene(&scene, "test").unwrap()
 }
 
 fn light(position: DVec3) -> Light {
