@@ -33,5 +33,5 @@ pub use raystep_scene::{Light, Material, Scene};
 pub use reflect::reflect;
 pub use shading::{LightSample, ShadingTerms};
 pub use sphere::Sphere;
-pub use trace::{Terms, render, render_with, shade, shade_with, trace};
+pub use trace::{Terms, render, render_with, shade, shade_hit, shade_with, trace};
 pub use world::{Object, Shape, World, WorldError};

@@ -1,7 +1,7 @@
-use crate::{LightSample, ShadingTerms, World, shading_terms};
+use crate::{LightSample, Object, ShadingTerms, World, shading_terms};
 use raystep_core::{DVec3, Hit, Interval, Ray};
 use raystep_render::{Image, RenderError, RenderOptions};
-use raystep_scene::Light;
+use raystep_scene::{Light, Material};
 
 // ANCHOR: shade
 /// The local model's terms where `ray` first hits the world, or None if it
@@ -21,15 +21,38 @@ pub fn shade_with(
 ) -> Option<ShadingTerms> {
     // Step 1: the closest hit.
     let (hit, object) = world.closest_hit(ray, Interval::FORWARD)?;
+    Some(shade_hit(world, ray, &hit, object, visibility))
+}
+
+/// Steps 2–4 of [`shade_with`] for a hit already found: the local model's
+/// terms at `hit` on `object`, seen along `ray`. Chapters 05–06 call it
+/// at every bounce of a recursive ray.
+pub fn shade_hit(
+    world: &World,
+    ray: &Ray,
+    hit: &Hit,
+    object: &Object,
+    visibility: impl Fn(&Hit, DVec3, &Light) -> f64,
+) -> ShadingTerms {
     let material = &world.materials[object.material];
+    // (A checkered material swaps its ka and kd on every other cube.)
+    let patterned;
+    let material = match material.checker {
+        None => material,
+        Some(_) => {
+            let (ka, kd) = material.ka_kd_at(hit.point);
+            patterned = Material {
+                ka,
+                kd,
+                ..material.clone()
+            };
+            &patterned
+        }
+    };
     // Step 2: N facing the viewer (planes and polygons have two sides), and
     // V, the unit direction back to the eye.
     let to_eye = -ray.direction.normalize();
-    let normal = if hit.normal.dot(to_eye) < 0.0 {
-        -hit.normal
-    } else {
-        hit.normal
-    };
+    let normal = hit.facing(ray.direction);
     // Step 3: Lᵢ, Iᵢ and Sᵢ for every light.
     let lights: Vec<LightSample> = world
         .lights
@@ -37,23 +60,18 @@ pub fn shade_with(
         .map(|light| LightSample {
             direction: (light.position - hit.point).normalize(),
             intensity: light.intensity,
-            visibility: visibility(&hit, normal, light),
+            visibility: visibility(hit, normal, light),
         })
         .collect();
     // Step 4: the local model.
-    Some(shading_terms(
-        material,
-        normal,
-        to_eye,
-        world.ambient,
-        &lights,
-    ))
+    shading_terms(material, normal, to_eye, world.ambient, &lights)
 }
 // ANCHOR_END: shade
 
-/// The colour seen along `ray`: the local model's sum, black for a miss.
+/// The colour seen along `ray`: the local model's sum, the background for
+/// a miss.
 pub fn trace(world: &World, ray: &Ray) -> DVec3 {
-    shade(world, ray).map_or(DVec3::ZERO, |terms| terms.sum())
+    shade(world, ray).map_or(world.background, |terms| terms.sum())
 }
 
 /// Which of the model's terms a render shows (the figures' panels).
@@ -84,7 +102,7 @@ impl Terms {
 /// number of threads.
 pub fn render(world: &World, terms: Terms, options: &RenderOptions) -> Result<Image, RenderError> {
     render_with(world, options, |ray| {
-        shade(world, ray).map_or(DVec3::ZERO, |t| terms.pick(&t))
+        shade(world, ray).map_or(world.background, |t| terms.pick(&t))
     })
 }
 // ANCHOR_END: render

@@ -67,6 +67,8 @@ pub struct World {
     pub lights: Vec<Light>,
     /// Ia, the ambient intensity.
     pub ambient: DVec3,
+    /// What a ray that hits nothing sees.
+    pub background: DVec3,
     /// The camera, with the image's aspect ratio.
     pub camera: Camera,
     /// Image width in pixels.
@@ -117,6 +119,7 @@ impl World {
             materials: scene.materials.clone(),
             lights: scene.lights.clone(),
             ambient: scene.ambient,
+            background: scene.background,
             camera: scene.camera.camera(aspect),
             width: scene.width,
             height: scene.height,

@@ -14,9 +14,7 @@ fn material(kd: f64, ks: f64, p: f64) -> Material {
         kd: v(kd, kd * 0.5, kd * 0.25),
         ks: DVec3::splat(ks),
         p,
-        kr: DVec3::ZERO,
-        kt: DVec3::ZERO,
-        ior: 1.0,
+        ..Material::default()
     }
 }
 

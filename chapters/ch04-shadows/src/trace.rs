@@ -14,10 +14,10 @@ pub fn shade(world: &World, ray: &Ray, offset: Offset) -> Option<ShadingTerms> {
 }
 // ANCHOR_END: shade
 
-/// The colour seen along `ray`: the local model with shadows, black for a
-/// miss.
+/// The colour seen along `ray`: the local model with shadows, the
+/// background for a miss.
 pub fn trace(world: &World, ray: &Ray, offset: Offset) -> DVec3 {
-    shade(world, ray, offset).map_or(DVec3::ZERO, |terms| terms.sum())
+    shade(world, ray, offset).map_or(world.background, |terms| terms.sum())
 }
 
 // ANCHOR: render

@@ -11,3 +11,16 @@ pub struct Hit {
     /// (a plane's N, a sphere's outward normal): not flipped toward the ray.
     pub normal: DVec3,
 }
+
+impl Hit {
+    /// The normal turned against `direction`, the direction of the ray that
+    /// made the hit: the normal on the side the ray came from, whichever
+    /// side of the surface that is.
+    pub fn facing(&self, direction: DVec3) -> DVec3 {
+        if self.normal.dot(direction) > 0.0 {
+            -self.normal
+        } else {
+            self.normal
+        }
+    }
+}

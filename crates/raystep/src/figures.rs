@@ -18,6 +18,8 @@ pub const CHAPTERS: &[ChapterFigures] = &[
     ("ch02", ch02::figures::all),
     ("ch03", ch03::figures::all),
     ("ch04", ch04::figures::all),
+    ("ch05", ch05::figures::all),
+    ("ch06", ch06::figures::all),
 ];
 
 /// What `raystep figures` was asked to do.

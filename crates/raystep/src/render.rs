@@ -15,7 +15,12 @@ type Renderer = fn(&Scene, &str, &RenderOptions) -> Result<Image, String>;
 /// The renderers, in lecture order; each chapter renders what it has taught
 /// so far. A scene is rendered by its own chapter's renderer when it lies in
 /// a chapter folder, else by the latest.
-const RENDERERS: &[(&str, Renderer)] = &[("ch03", render_ch03), ("ch04", render_ch04)];
+const RENDERERS: &[(&str, Renderer)] = &[
+    ("ch03", render_ch03),
+    ("ch04", render_ch04),
+    ("ch05", render_ch05),
+    ("ch06", render_ch06),
+];
 
 /// Chapter 03: the local model, every light visible.
 fn render_ch03(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
@@ -27,6 +32,23 @@ fn render_ch03(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Ima
 fn render_ch04(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
     let world = ch03::World::from_scene(scene, file).map_err(|e| e.to_string())?;
     ch04::render(&world, ch04::Offset::ScaleAware, options).map_err(|e| e.to_string())
+}
+
+/// Chapter 05: recursive reflected rays, stopped by contribution.
+fn render_ch05(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
+    let world = ch03::World::from_scene(scene, file).map_err(|e| e.to_string())?;
+    let (image, _) =
+        ch05::render(&world, &ch05::DEFAULT_STOP, options).map_err(|e| e.to_string())?;
+    Ok(image)
+}
+
+/// Chapter 06: reflection and refraction, split by the exact Fresnel
+/// equations.
+fn render_ch06(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
+    let world = ch03::World::from_scene(scene, file).map_err(|e| e.to_string())?;
+    let (image, _) = ch06::render(&world, &ch05::DEFAULT_STOP, ch06::Fresnel::Exact, options)
+        .map_err(|e| e.to_string())?;
+    Ok(image)
 }
 
 /// What `raystep render` was asked to do.

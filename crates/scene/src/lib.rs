@@ -118,6 +118,9 @@ pub struct Scene {
     pub camera: CameraSpec,
     /// The ambient intensity `Ia`, each component `≥ 0`.
     pub ambient: DVec3,
+    /// What a ray that hits nothing sees, each component `≥ 0` (default
+    /// black).
+    pub background: DVec3,
     /// The point lights, in file order.
     pub lights: Vec<Light>,
     /// The materials: `materials[0]` is always the one named `"default"`,
@@ -191,6 +194,47 @@ pub struct Material {
     pub kt: DVec3,
     /// Index of refraction, `> 0` (chapter 06).
     pub ior: f64,
+    /// An optional checkerboard: every other cube of the pattern uses the
+    /// checker's `ka` and `kd` instead of the material's.
+    pub checker: Option<Checker>,
+}
+
+impl Material {
+    /// `(ka, kd)` at `point`: the material's own, or the checker's on its
+    /// odd cubes.
+    pub fn ka_kd_at(&self, point: DVec3) -> (DVec3, DVec3) {
+        match &self.checker {
+            Some(checker) if checker.is_odd(point) => (checker.ka, checker.kd),
+            _ => (self.ka, self.kd),
+        }
+    }
+}
+
+/// A 3D checkerboard of cubes `size` wide, aligned with the axes and
+/// centred on the multiples of `size`: the pattern a plane shows is the
+/// cubes' cross-section.
+///
+/// Centred, not cornered, on the lattice: a floor at y = −1 then cuts a
+/// layer of cubes through the middle. Were the cube faces at the
+/// multiples of `size`, such a floor would lie exactly on a face, and the
+/// rounding of each hit point's y would pick the colour above or below it
+/// at random, pixel by pixel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Checker {
+    /// The edge length of one cube, `> 0`.
+    pub size: f64,
+    /// Ambient reflectance on the odd cubes (default: its `kd`).
+    pub ka: DVec3,
+    /// Diffuse reflectance on the odd cubes (default 0.1).
+    pub kd: DVec3,
+}
+
+impl Checker {
+    /// Is `point` in an odd cube (the sum of its cube indices odd)?
+    pub fn is_odd(&self, point: DVec3) -> bool {
+        let cube = (point / self.size + 0.5).floor();
+        (cube.x + cube.y + cube.z).rem_euclid(2.0) == 1.0
+    }
 }
 
 impl Default for Material {
@@ -206,6 +250,7 @@ impl Default for Material {
             kr: DVec3::ZERO,
             kt: DVec3::ZERO,
             ior: 1.0,
+            checker: None,
         }
     }
 }
@@ -330,6 +375,10 @@ fn build(raw: RawScene, cx: &Context) -> Result<Scene, SceneError> {
         .ambient
         .and_then(|Table(a)| a.intensity)
         .map_or(DVec3::splat(DEFAULT_AMBIENT), |c| c.0);
+    let background = raw
+        .background
+        .and_then(|Table(b)| b.intensity)
+        .map_or(DVec3::ZERO, |c| c.0);
     let lights = raw
         .lights
         .into_iter()
@@ -362,6 +411,7 @@ fn build(raw: RawScene, cx: &Context) -> Result<Scene, SceneError> {
         height,
         camera,
         ambient,
+        background,
         lights,
         materials,
         objects,
@@ -469,6 +519,24 @@ fn material(
             ));
         }
     };
+    let checker = match m.checker {
+        None => None,
+        Some(Table(c)) => {
+            let size = c.size.get_ref().0;
+            if size <= 0.0 {
+                return Err(cx.error(
+                    c.size.span(),
+                    format!("must be positive, got {}", format_number(size)),
+                ));
+            }
+            let kd = c.kd.map_or(DVec3::splat(0.1), |c| c.0);
+            Some(Checker {
+                size,
+                ka: c.ka.map_or(kd, |c| c.0),
+                kd,
+            })
+        }
+    };
     Ok(Material {
         name,
         ka: m.ka.map_or(kd, |c| c.0),
@@ -478,6 +546,7 @@ fn material(
         kr: m.kr.map_or(DVec3::ZERO, |c| c.0),
         kt: m.kt.map_or(DVec3::ZERO, |c| c.0),
         ior: m.ior.map_or(1.0, |i| i.0),
+        checker,
     })
 }
 

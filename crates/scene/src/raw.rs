@@ -26,6 +26,7 @@ pub(crate) struct RawScene {
     pub image: Option<Table<RawImage>>,
     pub camera: Spanned<Table<RawCamera>>,
     pub ambient: Option<Table<RawAmbient>>,
+    pub background: Option<Table<RawBackground>>,
     #[serde(default)]
     pub lights: Vec<Table<RawLight>>,
     #[serde(default)]
@@ -58,6 +59,12 @@ pub(crate) struct RawAmbient {
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
+pub(crate) struct RawBackground {
+    pub intensity: Option<Colour>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 pub(crate) struct RawLight {
     pub position: Vec3,
     pub intensity: Option<Colour>,
@@ -73,6 +80,15 @@ pub(crate) struct RawMaterial {
     pub kr: Option<Colour>,
     pub kt: Option<Colour>,
     pub ior: Option<Ior>,
+    pub checker: Option<Table<RawChecker>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawChecker {
+    pub size: Spanned<Finite>,
+    pub ka: Option<Colour>,
+    pub kd: Option<Colour>,
 }
 
 /// One `[[objects]]` entry. The shape is one of three optional keys rather

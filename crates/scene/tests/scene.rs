@@ -5,8 +5,8 @@ use std::path::Path;
 
 use raystep_core::DVec3;
 use raystep_scene::{
-    CameraSpec, Light, MAX_SIZE, Material, Object, REFRACTIVE_INDICES, Scene, SceneError, Shape,
-    index_of_refraction, load, parse,
+    CameraSpec, Checker, Light, MAX_SIZE, Material, Object, REFRACTIVE_INDICES, Scene, SceneError,
+    Shape, index_of_refraction, load, parse,
 };
 
 const EXAMPLE: &str = include_str!("../src/example.toml");
@@ -29,6 +29,7 @@ fn the_complete_example_scene_reads_into_the_expected_values() {
         kr: DVec3::ZERO,
         kt: DVec3::ZERO,
         ior: 1.0,
+        checker: None,
     };
     let glass = Material {
         name: "glass".into(),
@@ -39,10 +40,16 @@ fn the_complete_example_scene_reads_into_the_expected_values() {
         kr: DVec3::splat(0.1),
         kt: DVec3::splat(0.9),
         ior: 1.5,
+        checker: None,
     };
     let default = Material {
         ka: DVec3::splat(0.5),
         kd: DVec3::splat(0.5),
+        checker: Some(Checker {
+            size: 1.0,
+            ka: DVec3::splat(0.1),
+            kd: DVec3::splat(0.1),
+        }),
         ..Material::default()
     };
     let expected = Scene {
@@ -55,6 +62,7 @@ fn the_complete_example_scene_reads_into_the_expected_values() {
             vfov: 40.0,
         },
         ambient: DVec3::splat(0.1),
+        background: DVec3::ZERO,
         lights: vec![
             Light {
                 position: v(5.0, 5.0, 5.0),
@@ -74,7 +82,7 @@ fn the_complete_example_scene_reads_into_the_expected_values() {
                     radius: 1.0,
                 },
                 material: 1,
-                line: 46,
+                line: 50,
             },
             Object {
                 shape: Shape::Sphere {
@@ -82,7 +90,7 @@ fn the_complete_example_scene_reads_into_the_expected_values() {
                     radius: 0.5,
                 },
                 material: 2,
-                line: 50,
+                line: 54,
             },
             Object {
                 shape: Shape::Plane {
@@ -90,14 +98,14 @@ fn the_complete_example_scene_reads_into_the_expected_values() {
                     normal: DVec3::Y, // normalised from [0, 2, 0]
                 },
                 material: 0,
-                line: 54,
+                line: 58,
             },
             Object {
                 shape: Shape::Polygon {
                     vertices: vec![v(-2.0, -1.0, -2.0), v(2.0, -1.0, -2.0), v(0.0, 2.0, -2.0)],
                 },
                 material: 1,
-                line: 57,
+                line: 61,
             },
         ],
     };
@@ -131,6 +139,7 @@ fn a_scene_with_only_a_camera_gets_every_default() {
                 vfov: 40.0,
             },
             ambient: DVec3::splat(0.1),
+            background: DVec3::ZERO,
             lights: vec![],
             materials: vec![Material {
                 name: "default".into(),
@@ -141,6 +150,7 @@ fn a_scene_with_only_a_camera_gets_every_default() {
                 kr: DVec3::ZERO,
                 kt: DVec3::ZERO,
                 ior: 1.0,
+                checker: None,
             }],
             objects: vec![],
         }
@@ -239,7 +249,7 @@ bad_inputs! {
         => "bad.toml:5:1: TOML syntax: duplicate key `vfov`";
     unknown_top_level_table:
         concat!(camera!(), "[light]\nposition = [1, 1, 1]\n")
-        => "bad.toml:4:2: light: unknown field, expected one of `image`, `camera`, `ambient`, `lights`, `materials`, `objects`";
+        => "bad.toml:4:2: light: unknown field, expected one of `image`, `camera`, `ambient`, `background`, `lights`, `materials`, `objects`";
     unknown_camera_field:
         concat!(camera!(), "fov = 40\n")
         => "bad.toml:4:1: camera.fov: unknown field, expected one of `look_from`, `look_at`, `up`, `vfov`";
@@ -251,7 +261,7 @@ bad_inputs! {
         => "bad.toml:4:1: camera.lights: unknown field, expected one of `look_from`, `look_at`, `up`, `vfov` (`lights` belongs at the top of the file, above the first [table] header)";
     unknown_material_field:
         concat!(camera!(), "[materials.red]\nkd = 1\nshininess = 3\n")
-        => "bad.toml:6:1: materials.red.shininess: unknown field, expected one of `ka`, `kd`, `ks`, `p`, `kr`, `kt`, `ior`";
+        => "bad.toml:6:1: materials.red.shininess: unknown field, expected one of `ka`, `kd`, `ks`, `p`, `kr`, `kt`, `ior`, `checker`";
     missing_camera:
         "[image]\nwidth = 10\n"
         => "bad.toml:1:1: camera: required, but missing";
@@ -323,6 +333,12 @@ bad_inputs! {
     zero_phong_exponent:
         concat!(camera!(), "[materials.shiny]\np = 0\n")
         => "bad.toml:5:5: materials.shiny.p: must be positive, got 0";
+    zero_checker_size:
+        concat!(camera!(), "[materials.floor]\nchecker = { size = 0 }\n")
+        => "bad.toml:5:20: materials.floor.checker.size: must be positive, got 0";
+    negative_background:
+        concat!(camera!(), "[background]\nintensity = [0, -0.5, 0]\n")
+        => "bad.toml:5:17: background.intensity[1]: must not be negative, got -0.5";
     negative_ior:
         concat!(camera!(), "[materials.odd]\nior = -1.5\n")
         => "bad.toml:5:7: materials.odd.ior: must be positive, got -1.5";
@@ -404,4 +420,33 @@ fn limits_are_inclusive() {
     let source = format!("{}[image]\nwidth = 1\nheight = {MAX_SIZE}\n", camera!());
     let scene = parse(&source, "ok.toml").unwrap();
     assert_eq!((scene.width, scene.height), (1, MAX_SIZE));
+}
+
+#[test]
+fn a_checker_alternates_cube_by_cube_and_the_default_tiles_are_the_materials_own() {
+    let scene = parse(
+        "[camera]\nlook_from = [0, 1, 5]\nlook_at = [0, 0, 0]\n\
+         [materials.floor]\nkd = 0.8\nchecker = { size = 2, kd = [0.2, 0, 0] }\n",
+        "c.toml",
+    )
+    .unwrap();
+    let floor = &scene.materials[1];
+    let own = (DVec3::splat(0.8), DVec3::splat(0.8));
+    let odd = (v(0.2, 0.0, 0.0), v(0.2, 0.0, 0.0)); // ka follows the checker's kd
+    // cube (0,0,0) spans -1..1 on each axis and is even; one step of 2
+    // along any axis flips the colour, two steps do not
+    assert_eq!(floor.ka_kd_at(v(0.5, 0.5, 0.5)), own);
+    assert_eq!(floor.ka_kd_at(v(2.5, 0.5, 0.5)), odd);
+    assert_eq!(floor.ka_kd_at(v(-1.5, 0.5, 0.5)), odd);
+    assert_eq!(floor.ka_kd_at(v(2.5, -1.5, 0.5)), own);
+    assert_eq!(floor.ka_kd_at(v(-3.5, -1.0, 5.0)), odd); // cubes -2, 0, 3 (5/2 + 1/2 = 3)
+    // a floor on a lattice plane (y = -2, a multiple of the size) is
+    // mid-layer: y a hair above or below gives the same colour
+    let below = floor.ka_kd_at(v(0.5, -2.0 - 1e-12, 0.5));
+    assert_eq!(floor.ka_kd_at(v(0.5, -2.0 + 1e-12, 0.5)), below);
+    // a material without a checker is the same everywhere
+    assert_eq!(
+        scene.materials[0].ka_kd_at(v(2.5, 0.5, 0.5)).1,
+        DVec3::splat(0.7)
+    );
 }
