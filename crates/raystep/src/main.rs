@@ -47,9 +47,12 @@ enum Command {
     },
     /// Time the renders behind the charts (slow) and write their CSV beside the figures.
     Measure {
-        /// Renders timed per data point; the median is kept.
+        /// Timing samples per data point; the median is kept.
         #[arg(long, default_value_t = 11)]
         repeats: usize,
+        /// Only this chapter: `05`, `5` or `ch05`.
+        #[arg(long, value_name = "CHAPTER")]
+        chapter: Option<String>,
         /// The folder that holds one folder per chapter [default: <workspace>/book/src/figures].
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
@@ -204,7 +207,15 @@ fn main() -> ExitCode {
             format: format.into(),
             check,
         }),
-        Command::Measure { repeats, out } => measure::run(&measure::Options { repeats, out }),
+        Command::Measure {
+            repeats,
+            chapter,
+            out,
+        } => measure::run(&measure::Options {
+            repeats,
+            chapter,
+            out,
+        }),
         Command::Render {
             scene,
             out,

@@ -15,11 +15,68 @@ use crate::{Error, shown};
 pub struct Options {
     /// Renders timed per data point (the median is kept).
     pub repeats: usize,
+    /// One chapter (`05`, `ch05`, …) or every chapter with a chart.
+    pub chapter: Option<String>,
     /// The folder holding one folder per chapter [default: book/src/figures].
     pub out: Option<PathBuf>,
 }
 
-/// Runs every measurement and writes its CSV.
+/// One chapter's timing run: where its CSV goes, what the progress bar
+/// counts, and the run itself.
+pub struct Measurement {
+    /// The chapter's id, `ch04`, and the folder the CSV goes to.
+    pub chapter: &'static str,
+    /// The progress bar's name.
+    what: &'static str,
+    /// The CSV file's name in the chapter's folder.
+    pub file: &'static str,
+    /// How many steps the run reports, given the repeats.
+    steps: fn(usize) -> u64,
+    /// Runs with this many repeats per data point, calling back per step,
+    /// and returns the CSV text.
+    run: fn(usize, &mut dyn FnMut()) -> String,
+}
+
+/// Every chapter's measurement, in lecture order.
+pub const MEASUREMENTS: &[Measurement] = &[
+    // Chapter 04: acne and leaks against render time.
+    Measurement {
+        chapter: "ch04",
+        what: "ch04 acne",
+        file: "acne.csv",
+        steps: |_| {
+            (ch04::measure::CHART_STRATEGIES.len() * ch04::measure::CHART_SCALES.len()) as u64
+        },
+        run: |repeats, step| {
+            let rows = ch04::measure::measure_acne(repeats, step);
+            ch04::measure::to_csv(&rows)
+        },
+    },
+    // Chapter 05: the stopping rules' error against render time.
+    Measurement {
+        chapter: "ch05",
+        what: "ch05 stopping",
+        file: "stopping.csv",
+        steps: |rounds| (ch05::measure::CHART_SCENES.len() * rounds) as u64,
+        run: |repeats, step| {
+            let rows = ch05::measure::measure_stopping(repeats, step);
+            ch05::measure::to_csv(&rows)
+        },
+    },
+    // Chapter 06: Schlick and no Fresnel split against the exact split.
+    Measurement {
+        chapter: "ch06",
+        what: "ch06 fresnel",
+        file: "fresnel.csv",
+        steps: |_| (ch06::REFRACTIVE_INDICES.len() * ch06::measure::CHART_MODES.len()) as u64,
+        run: |repeats, step| {
+            let rows = ch06::measure::measure_fresnel(repeats, step);
+            ch06::measure::to_csv(&rows)
+        },
+    },
+];
+
+/// Runs every measurement (or one chapter's) and writes its CSV.
 pub fn run(options: &Options) -> Result<ExitCode, Error> {
     if options.repeats == 0 {
         return Err(Error::Usage("--repeats 0: must be at least 1".to_string()));
@@ -28,14 +85,18 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         Some(out) => out.clone(),
         None => crate::figures::default_out(&crate::workspace::root()),
     };
-    // Chapter 04: acne and leaks against render time.
-    let steps = (ch04::measure::CHART_STRATEGIES.len() * ch04::measure::CHART_SCALES.len()) as u64;
-    let bar = progress_bar(steps, "ch04 acne");
-    let rows = ch04::measure::measure_acne(options.repeats, || bar.inc(1));
-    bar.finish_and_clear();
-    let path = out.join("ch04").join("acne.csv");
-    write_atomically(&path, ch04::measure::to_csv(&rows).as_bytes())?;
-    println!("wrote {} ({} rows)", shown(&path), rows.len());
+    let chosen: Vec<&Measurement> = match &options.chapter {
+        Some(arg) => vec![crate::workspace::resolve(arg, MEASUREMENTS, |m| m.chapter)?],
+        None => MEASUREMENTS.iter().collect(),
+    };
+    for measurement in chosen {
+        let bar = progress_bar((measurement.steps)(options.repeats), measurement.what);
+        let csv = (measurement.run)(options.repeats, &mut || bar.inc(1));
+        bar.finish_and_clear();
+        let path = out.join(measurement.chapter).join(measurement.file);
+        write_atomically(&path, csv.as_bytes())?;
+        println!("wrote {} ({} rows)", shown(&path), csv.lines().count() - 1);
+    }
     Ok(ExitCode::SUCCESS)
 }
 
@@ -68,4 +129,47 @@ fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
         let _ = std::fs::remove_file(&temp);
         Error::io(path, e)
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The CSV files committed beside the figures are exactly the ones the
+    /// measurements write: none is stale, none is missing.
+    #[test]
+    fn every_committed_csv_has_its_measurement() {
+        let figures = crate::figures::default_out(&crate::workspace::root());
+        let mut committed = Vec::new();
+        for chapter in std::fs::read_dir(&figures).expect("book/src/figures") {
+            let chapter = chapter.expect("a folder entry").path();
+            for file in std::fs::read_dir(&chapter).into_iter().flatten() {
+                let file = file.expect("a folder entry").path();
+                if file.extension().is_some_and(|e| e == "csv") {
+                    committed.push(format!(
+                        "{}/{}",
+                        chapter.file_name().unwrap().to_string_lossy(),
+                        file.file_name().unwrap().to_string_lossy()
+                    ));
+                }
+            }
+        }
+        committed.sort();
+        let measured: Vec<String> = MEASUREMENTS
+            .iter()
+            .map(|m| format!("{}/{}", m.chapter, m.file))
+            .collect();
+        assert_eq!(committed, measured);
+    }
+
+    #[test]
+    fn a_measurement_is_chosen_by_chapter() {
+        let found = crate::workspace::resolve("5", MEASUREMENTS, |m| m.chapter).unwrap();
+        assert_eq!(found.file, "stopping.csv");
+        let error = crate::workspace::resolve("02", MEASUREMENTS, |m| m.chapter)
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(error.contains("ch04, ch05, ch06"), "{error}");
+    }
 }

@@ -69,6 +69,27 @@ fn renders_a_chapter_scene_at_the_asked_size() {
     ]);
     assert!(run.status.success());
     assert!(String::from_utf8_lossy(&run.stdout).contains("ch04 renderer"));
+    // chapters 05 and 06: the recursive tracers, each for its own scenes
+    for (file, renderer) in [
+        ("ch05-reflection/scenes/mirrors.toml", "ch05 renderer"),
+        ("ch06-refraction/scenes/bubble.toml", "ch06 renderer"),
+    ] {
+        let out = dir.join("recursive.png");
+        let run = raystep(&[
+            "render",
+            &scene(file),
+            "--out",
+            out.to_str().unwrap(),
+            "--size",
+            "32x18",
+        ]);
+        assert!(run.status.success(), "{file}");
+        assert!(
+            String::from_utf8_lossy(&run.stdout).contains(renderer),
+            "{file}"
+        );
+        assert_eq!(png_size(&fs::read(&out).unwrap()), (32, 18));
+    }
 }
 
 #[test]

@@ -8,6 +8,7 @@
 //! * [`render`]: calls a pixel function for every pixel, rows in parallel,
 //!   with an optional progress bar; the result does not depend on the
 //!   number of threads.
+//! * [`timing::Timing`]: how the charts' render times are measured.
 //! * [`RenderError`]: everything that can go wrong, with messages that name
 //!   the path or argument at fault.
 //!
@@ -25,6 +26,7 @@ pub mod color;
 mod error;
 mod image;
 mod parallel;
+pub mod timing;
 
 pub use self::image::Image;
 pub use color::{Rgb, linear_from_srgb8, linear_to_srgb, srgb_to_linear, srgb8};

@@ -1,0 +1,74 @@
+//! The whole chapter at work on `scenes/mirrors.toml`: every pixel traced
+//! recursively under the default rule (contribution ≥ 1/1000). These use
+//! both exercises.
+use std::path::Path;
+
+use ch05::{DEFAULT_STOP, Image, RayCounts, RayKind, pixel_tree, render};
+use raystep_check::{Tolerance, assert_image_matches};
+
+mod common;
+use common::{chapter_scene, quiet};
+
+#[test]
+fn ascii_render() {
+    let world = chapter_scene("mirrors", 64, 36);
+    let (image, _) = render(&world, &DEFAULT_STOP, &quiet(Some(2))).unwrap();
+    insta::assert_snapshot!(image.to_ascii(64));
+}
+
+/// The scene at 160×90 against the reference render, within the default
+/// tolerance (2 levels of 8-bit sRGB on at most 0.1 % of the pixels). On a
+/// mismatch, actual, expected and diff images land in target/image-diffs/;
+/// RAYSTEP_BLESS=1 rewrites the reference.
+#[test]
+fn matches_the_reference_render() {
+    let world = chapter_scene("mirrors", 160, 90);
+    let (image, _) = render(&world, &DEFAULT_STOP, &quiet(Some(2))).unwrap();
+    let expected = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/images/mirrors-160x90.png");
+    assert_image_matches(&image, &expected, Tolerance::default());
+}
+
+/// Rows run in parallel, but every pixel is traced on its own and its rays
+/// counted in its own log: one thread or two give the same bits and the
+/// same counts.
+#[test]
+fn same_image_and_counts_for_one_and_two_threads() {
+    let world = chapter_scene("mirrors", 48, 27);
+    let (one, one_counts) = render(&world, &DEFAULT_STOP, &quiet(Some(1))).unwrap();
+    let (two, two_counts) = render(&world, &DEFAULT_STOP, &quiet(Some(2))).unwrap();
+    let bits = |image: &Image| {
+        image
+            .pixels()
+            .iter()
+            .map(|c| c.to_array().map(f64::to_bits))
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(bits(&one), bits(&two));
+    assert_eq!(one_counts, two_counts);
+    assert!(one_counts.reflected > 0);
+}
+
+/// The render's counts are the sum of its pixels' ray trees: every ray a
+/// tree holds is counted once, by kind or by the rule that cut it.
+#[test]
+fn counts_are_the_pixels_trees_added_up() {
+    let world = chapter_scene("mirrors", 48, 27);
+    let (_, counts) = render(&world, &DEFAULT_STOP, &quiet(Some(2))).unwrap();
+    let mut summed = RayCounts::default();
+    for row in 0..world.height {
+        for column in 0..world.width {
+            for ray in pixel_tree(&world, column, row, &DEFAULT_STOP) {
+                let n = match (ray.cut, ray.kind) {
+                    (Some(ch05::Cut::Depth), _) => &mut summed.cut_by_depth,
+                    (Some(ch05::Cut::Contribution), _) => &mut summed.cut_by_contribution,
+                    (None, RayKind::Primary) => &mut summed.primary,
+                    (None, RayKind::Shadow) => &mut summed.shadow,
+                    (None, RayKind::Reflected) => &mut summed.reflected,
+                    (None, RayKind::Transmitted) => &mut summed.transmitted,
+                };
+                *n += 1;
+            }
+        }
+    }
+    assert_eq!(summed, counts);
+}
