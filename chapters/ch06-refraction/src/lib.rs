@@ -17,8 +17,10 @@
 //! Student mode: with the feature `exercise` the modules marked below are
 //! replaced by the stubs in `exercise/`.
 
+pub mod chart;
 mod fresnel;
 mod ior;
+pub mod measure;
 mod media;
 mod render;
 mod tracer;

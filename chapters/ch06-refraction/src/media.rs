@@ -14,7 +14,7 @@ pub const MAX_NESTING: usize = 8;
 /// the stack of objects it is inside: entering an object pushes it,
 /// leaving pops it, and the index beyond a surface is whatever is on top
 /// afterwards.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug)]
 pub struct Media {
     outside: f64,
     objects: [usize; MAX_NESTING],
@@ -106,3 +106,14 @@ impl Media {
     }
 }
 // ANCHOR_END: media
+
+/// Two stacks are equal if they hold the same objects over the same
+/// outside medium; slots above the top (left over from popped objects) do
+/// not count.
+impl PartialEq for Media {
+    fn eq(&self, other: &Media) -> bool {
+        self.outside == other.outside
+            && self.objects() == other.objects()
+            && self.indices[..self.len] == other.indices[..other.len]
+    }
+}

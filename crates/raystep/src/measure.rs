@@ -68,7 +68,7 @@ pub const MEASUREMENTS: &[Measurement] = &[
         chapter: "ch06",
         what: "ch06 fresnel",
         file: "fresnel.csv",
-        steps: |_| (ch06::REFRACTIVE_INDICES.len() * ch06::measure::CHART_MODES.len()) as u64,
+        steps: |_| ch06::REFRACTIVE_INDICES.len() as u64,
         run: |repeats, step| {
             let rows = ch06::measure::measure_fresnel(repeats, step);
             ch06::measure::to_csv(&rows)
