@@ -5,8 +5,8 @@
 //! `raystep measure` runs [`measure_acne`] and writes [`to_csv`] into
 //! `book/src/figures/ch04/acne.csv`; `raystep figures` draws the chart
 //! from that file, so the figures stay byte-identical between runs.
-use std::time::Instant;
 
+use raystep_render::timing::Timing;
 use raystep_render::{Progress, RenderOptions};
 
 use crate::{Offset, render, scaled_scene, shadow_errors};
@@ -41,39 +41,54 @@ pub struct AcneRow {
     pub millis: f64,
 }
 
-/// Measures every strategy at every scale: errors once, render time as the
-/// median of `repeats` single-threaded renders. `step` is called after each
-/// (strategy, scale) pair, for a progress bar.
-pub fn measure_acne(repeats: usize, mut step: impl FnMut()) -> Vec<AcneRow> {
+/// How a render is timed: 8 renders per sample, the strategies taking
+/// turns at each scale; `raystep measure --repeats` sets the number of
+/// rounds.
+pub const TIMING: Timing = Timing {
+    rounds: 11,
+    batch: 8,
+};
+
+/// Measures every strategy at every scale: errors once (computed), render
+/// time per [`TIMING`] with `rounds` rounds, the median of single-threaded
+/// renders (measured). `step` is called after each scale, for a progress
+/// bar. The rows come strategy by strategy, each over every scale.
+pub fn measure_acne(rounds: usize, mut step: impl FnMut()) -> Vec<AcneRow> {
     let options = RenderOptions {
         threads: Some(1),
         progress: Progress::Never,
     };
     let mut rows = Vec::new();
-    for (name, offset) in CHART_STRATEGIES {
-        for scale in CHART_SCALES {
-            let mut world = scaled_scene(scale);
-            (world.width, world.height) = CHART_SIZE;
-            let errors = shadow_errors(&world, offset);
-            let _ = render(&world, offset, &options); // warm the caches first
-            let mut times: Vec<f64> = (0..repeats.max(1))
-                .map(|_| {
-                    let start = Instant::now();
-                    let _ = render(&world, offset, &options);
-                    start.elapsed().as_secs_f64() * 1e3
-                })
-                .collect();
-            times.sort_by(f64::total_cmp);
+    for scale in CHART_SCALES {
+        let mut world = scaled_scene(scale);
+        (world.width, world.height) = CHART_SIZE;
+        let world = &world;
+        let options = &options;
+        let mut jobs: Vec<Box<dyn FnMut() + '_>> = CHART_STRATEGIES
+            .iter()
+            .map(|&(_, offset)| {
+                Box::new(move || {
+                    let _ = render(world, offset, options);
+                }) as Box<dyn FnMut() + '_>
+            })
+            .collect();
+        let mut jobs: Vec<&mut dyn FnMut()> = jobs.iter_mut().map(|j| &mut **j as _).collect();
+        let times = TIMING.with_rounds(rounds).median_ms(&mut jobs, || ());
+        for ((name, offset), millis) in CHART_STRATEGIES.into_iter().zip(times) {
+            let errors = shadow_errors(world, offset);
             rows.push(AcneRow {
                 strategy: name.to_string(),
                 scale,
                 acne: errors.acne_fraction(),
                 leaks: errors.leak_fraction(),
-                millis: times[times.len() / 2],
+                millis,
             });
-            step();
         }
+        step();
     }
+    // strategy by strategy, as the chart and the CSV list them
+    let order = |name: &str| CHART_STRATEGIES.iter().position(|(n, _)| *n == name);
+    rows.sort_by_key(|r| order(&r.strategy));
     rows
 }
 
