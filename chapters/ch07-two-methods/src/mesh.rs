@@ -1,0 +1,221 @@
+//! Triangle meshes: the only primitive a rasterizer draws. Spheres become
+//! subdivided icosahedra; the Stanford bunny comes from an OBJ file.
+use std::collections::HashMap;
+use std::path::Path;
+
+use raystep_core::DVec3;
+use thiserror::Error;
+
+/// Triangles sharing vertices: each triangle is three indices into
+/// `vertices`, counter-clockwise seen from outside.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mesh {
+    /// The corners.
+    pub vertices: Vec<DVec3>,
+    /// Three indices into `vertices` per triangle.
+    pub triangles: Vec<[usize; 3]>,
+}
+
+/// Why a mesh file cannot be read.
+#[derive(Debug, Error)]
+pub enum MeshError {
+    /// The file cannot be read or is not valid OBJ.
+    #[error("{file}: {message}")]
+    Obj {
+        /// The file as given.
+        file: String,
+        /// What the OBJ reader said.
+        message: String,
+    },
+    /// The file holds no triangle.
+    #[error("{file}: no faces")]
+    Empty {
+        /// The file as given.
+        file: String,
+    },
+}
+
+impl Mesh {
+    /// The unit sphere as an icosahedron whose faces are split into four,
+    /// `subdivisions` times: 20·4ⁿ triangles, every vertex on the sphere.
+    pub fn icosphere(subdivisions: u32) -> Mesh {
+        // the icosahedron: three golden rectangles
+        let g = (1.0 + 5f64.sqrt()) / 2.0;
+        let corners = [
+            (-1.0, g, 0.0),
+            (1.0, g, 0.0),
+            (-1.0, -g, 0.0),
+            (1.0, -g, 0.0),
+            (0.0, -1.0, g),
+            (0.0, 1.0, g),
+            (0.0, -1.0, -g),
+            (0.0, 1.0, -g),
+            (g, 0.0, -1.0),
+            (g, 0.0, 1.0),
+            (-g, 0.0, -1.0),
+            (-g, 0.0, 1.0),
+        ];
+        let vertices = corners
+            .iter()
+            .map(|&(x, y, z)| DVec3::new(x, y, z).normalize())
+            .collect();
+        let triangles = vec![
+            [0, 11, 5],
+            [0, 5, 1],
+            [0, 1, 7],
+            [0, 7, 10],
+            [0, 10, 11],
+            [1, 5, 9],
+            [5, 11, 4],
+            [11, 10, 2],
+            [10, 7, 6],
+            [7, 1, 8],
+            [3, 9, 4],
+            [3, 4, 2],
+            [3, 2, 6],
+            [3, 6, 8],
+            [3, 8, 9],
+            [4, 9, 5],
+            [2, 4, 11],
+            [6, 2, 10],
+            [8, 6, 7],
+            [9, 8, 1],
+        ];
+        let mut mesh = Mesh {
+            vertices,
+            triangles,
+        };
+        for _ in 0..subdivisions {
+            mesh = mesh.subdivided();
+        }
+        mesh
+    }
+
+    /// Every triangle split into four at its edges' midpoints, pushed out
+    /// onto the unit sphere. A midpoint is made once per edge, so the two
+    /// triangles of an edge share it exactly.
+    fn subdivided(&self) -> Mesh {
+        let mut vertices = self.vertices.clone();
+        let mut midpoints: HashMap<(usize, usize), usize> = HashMap::new();
+        let mut midpoint = |a: usize, b: usize, vertices: &mut Vec<DVec3>| {
+            *midpoints.entry((a.min(b), a.max(b))).or_insert_with(|| {
+                vertices.push(((vertices[a] + vertices[b]) / 2.0).normalize());
+                vertices.len() - 1
+            })
+        };
+        let mut triangles = Vec::with_capacity(self.triangles.len() * 4);
+        for &[a, b, c] in &self.triangles {
+            let ab = midpoint(a, b, &mut vertices);
+            let bc = midpoint(b, c, &mut vertices);
+            let ca = midpoint(c, a, &mut vertices);
+            triangles.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
+        }
+        Mesh {
+            vertices,
+            triangles,
+        }
+    }
+
+    /// Reads the triangles of an OBJ file (polygons are split into fans).
+    pub fn load_obj(path: &Path) -> Result<Mesh, MeshError> {
+        let file = path.display().to_string();
+        let options = tobj::LoadOptions {
+            triangulate: true,
+            single_index: true,
+            ..tobj::LoadOptions::default()
+        };
+        let (models, _) = tobj::load_obj(path, &options).map_err(|e| MeshError::Obj {
+            file: file.clone(),
+            message: e.to_string(),
+        })?;
+        let mut mesh = Mesh {
+            vertices: Vec::new(),
+            triangles: Vec::new(),
+        };
+        for model in models {
+            let first = mesh.vertices.len();
+            let m = model.mesh;
+            mesh.vertices.extend(
+                m.positions
+                    .chunks_exact(3)
+                    .map(|p| DVec3::new(f64::from(p[0]), f64::from(p[1]), f64::from(p[2]))),
+            );
+            mesh.triangles.extend(m.indices.chunks_exact(3).map(|t| {
+                [
+                    first + t[0] as usize,
+                    first + t[1] as usize,
+                    first + t[2] as usize,
+                ]
+            }));
+        }
+        if mesh.triangles.is_empty() {
+            return Err(MeshError::Empty { file });
+        }
+        Ok(mesh)
+    }
+
+    /// The corners of triangle `k`.
+    pub fn triangle(&self, k: usize) -> [DVec3; 3] {
+        self.triangles[k].map(|i| self.vertices[i])
+    }
+
+    /// The mesh moved and scaled so that its bounding box is centred on
+    /// `centre` and its largest side is `size`.
+    pub fn fitted(&self, centre: DVec3, size: f64) -> Mesh {
+        let lo = self.vertices.iter().fold(DVec3::MAX, |a, &v| a.min(v));
+        let hi = self.vertices.iter().fold(DVec3::MIN, |a, &v| a.max(v));
+        let scale = size / (hi - lo).max_element();
+        let middle = (lo + hi) / 2.0;
+        Mesh {
+            vertices: self
+                .vertices
+                .iter()
+                .map(|&v| centre + (v - middle) * scale)
+                .collect(),
+            triangles: self.triangles.clone(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_icosphere_has_20_times_4_to_the_n_triangles_on_the_sphere() {
+        for n in 0..4 {
+            let mesh = Mesh::icosphere(n);
+            assert_eq!(mesh.triangles.len(), 20 * 4usize.pow(n));
+            // Euler: V − E + F = 2 with E = 3F/2
+            assert_eq!(mesh.vertices.len(), 2 + mesh.triangles.len() / 2);
+            assert!(
+                mesh.vertices
+                    .iter()
+                    .all(|v| (v.length() - 1.0).abs() < 1e-12)
+            );
+            // counter-clockwise from outside: every normal points away
+            for k in 0..mesh.triangles.len() {
+                let [a, b, c] = mesh.triangle(k);
+                assert!((b - a).cross(c - a).dot(a + b + c) > 0.0, "triangle {k}");
+            }
+        }
+    }
+
+    #[test]
+    fn fitting_centres_and_scales_the_bounding_box() {
+        let mesh = Mesh::icosphere(1).fitted(DVec3::new(1.0, 2.0, 3.0), 0.5);
+        let lo = mesh.vertices.iter().fold(DVec3::MAX, |a, &v| a.min(v));
+        let hi = mesh.vertices.iter().fold(DVec3::MIN, |a, &v| a.max(v));
+        assert!(((lo + hi) / 2.0 - DVec3::new(1.0, 2.0, 3.0)).length() < 1e-12);
+        assert!(((hi - lo).max_element() - 0.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_missing_obj_file_is_named() {
+        let error = Mesh::load_obj(Path::new("no/such/mesh.obj")).unwrap_err();
+        assert!(
+            error.to_string().starts_with("no/such/mesh.obj: "),
+            "{error}"
+        );
+    }
+}

@@ -1,0 +1,179 @@
+//! Triangles a rasterizer must survive: of zero area on screen, entirely
+//! behind the camera, and crossing the near plane (in front of the eye
+//! and behind it at once, where the perspective divide would flip or
+//! blow up). These use both exercises.
+use ch07::{DVec3, Mesh, NEAR, Projection, Stage, clip_near, compare, rasterize, raycast};
+
+mod common;
+use common::{polygon, stage_from};
+
+/// A camera at (0, 1, 0) looking ahead and a little down, 48×27 pixels,
+/// and these objects.
+fn stage(objects: &[(&[[f64; 3]], &str)]) -> Stage {
+    let mut text = String::from(
+        "[camera]\nlook_from = [0, 1, 0]\nlook_at = [0, 0.6, -4]\nvfov = 60\n\
+         [ambient]\nintensity = 0.2\n\
+         [[lights]]\nposition = [2, 5, 2]\nintensity = 0.8\n\
+         [materials.floor]\nkd = 0.7\nchecker = { size = 1, kd = 0.2 }\n\
+         [materials.wall]\nkd = [0.8, 0.4, 0.3]\n",
+    );
+    for (vertices, material) in objects {
+        text.push_str(&polygon(vertices, material));
+    }
+    stage_from(&text, "degenerate.toml", 48, 27)
+}
+
+/// A floor triangle reaching 30 units behind the eye on both sides and 30
+/// ahead: it passes under the eye, two of its corners are behind it.
+const FLOOR: &[[f64; 3]] = &[[-30.0, 0.0, 30.0], [30.0, 0.0, 30.0], [0.0, 0.0, -30.0]];
+/// A wall at x = 1.5 from 5 units behind the eye to 6 ahead: one corner
+/// behind, so clipping leaves a quadrilateral (two triangles).
+const WALL: &[[f64; 3]] = &[[1.5, 0.3, 5.0], [1.5, 0.3, -6.0], [1.5, 2.5, -6.0]];
+/// A triangle 3 to 4 units behind the eye.
+const BEHIND: &[[f64; 3]] = &[[-1.0, 0.5, 3.0], [1.0, 0.5, 4.0], [0.0, 2.0, 3.0]];
+/// A triangle in the plane x = 0, which holds the eye: seen edge on, it
+/// projects onto one line, a triangle of zero area on screen.
+const EDGE_ON: &[[f64; 3]] = &[[0.0, 0.0, -2.0], [0.0, 0.5, -5.0], [0.0, 2.0, -3.0]];
+
+/// How many of the stage's triangles are in front of, across and behind
+/// the near plane.
+fn clip_cases(stage: &Stage) -> (usize, usize, usize) {
+    let world = &stage.world;
+    let projection = Projection {
+        camera: world.camera,
+        width: world.width,
+        height: world.height,
+    };
+    let mut cases = (0, 0, 0);
+    for t in &stage.triangles {
+        let view = t.corners.map(|c| projection.view(c));
+        match view.iter().filter(|v| v.z >= NEAR).count() {
+            3 => cases.0 += 1,
+            0 => cases.2 += 1,
+            _ => cases.1 += 1,
+        }
+    }
+    cases
+}
+
+/// The floor and the wall cross the near plane; rasterizing them does not
+/// panic, draws one triangle for the floor (two corners cut off) and two
+/// for the wall (one corner cut off), and shows what the ray caster shows
+/// except on edges, with the same depths.
+#[test]
+fn triangles_crossing_the_near_plane_are_clipped() {
+    let stage = stage(&[(FLOOR, "floor"), (WALL, "wall")]);
+    assert_eq!(clip_cases(&stage), (0, 2, 0), "(in front, across, behind)");
+    let (raster, counts) = rasterize(&stage);
+    assert_eq!(counts.triangles, 1 + 2, "triangles drawn after clipping");
+    let cast = raycast(&stage);
+    let agreement = compare(&stage, &raster, &cast);
+    assert!(
+        agreement.elsewhere.is_empty(),
+        "the ids differ away from the edges at {:?}",
+        agreement.elsewhere
+    );
+    assert!(agreement.worst_depth <= 1e-9, "{}", agreement.worst_depth);
+    // both objects are seen, the floor in a third of the image at least
+    let seen = |id: usize| raster.id.iter().filter(|&&i| i == Some(id)).count();
+    assert!(seen(0) > 48 * 27 / 3, "floor pixels: {}", seen(0));
+    assert!(seen(1) > 20, "wall pixels: {}", seen(1));
+    insta::assert_snapshot!(format!(
+        "{} pixels differ, all on edges\n\nrasterized ids (0 floor, 1 wall):\n{}",
+        agreement.differing(),
+        raster.ids_to_ascii()
+    ));
+}
+
+/// What the near plane leaves of a triangle, corner by corner: nothing
+/// closer to the eye than NEAR.
+#[test]
+fn clipping_keeps_only_what_is_in_front() {
+    let stage = stage(&[(FLOOR, "floor"), (WALL, "wall")]);
+    let world = &stage.world;
+    let projection = Projection {
+        camera: world.camera,
+        width: world.width,
+        height: world.height,
+    };
+    for t in &stage.triangles {
+        let kept = clip_near(t.corners.map(|c| projection.view(c)));
+        assert!((3..=4).contains(&kept.len()), "{kept:?}");
+        assert!(kept.iter().all(|v| v.z >= NEAR), "{kept:?}");
+        // and every corner projects to a finite point
+        assert!(
+            kept.iter().all(|&v| projection.to_pixels(v).is_finite()),
+            "{kept:?}"
+        );
+    }
+}
+
+/// A triangle entirely behind the eye is drawn by neither method, and
+/// neither is a triangle seen edge on (zero area on screen, and its plane
+/// holds every ray that could meet it).
+#[test]
+fn triangles_behind_the_eye_or_edge_on_draw_nothing() {
+    let stage = stage(&[(BEHIND, "wall"), (EDGE_ON, "wall")]);
+    assert_eq!(clip_cases(&stage), (1, 0, 1), "(in front, across, behind)");
+    let (raster, counts) = rasterize(&stage);
+    // the edge-on one is drawn (it is in front) but covers nothing
+    assert_eq!(counts.triangles, 1);
+    assert_eq!(counts.covered, 0);
+    let cast = raycast(&stage);
+    assert!(raster.id.iter().all(Option::is_none), "rasterized");
+    assert!(cast.id.iter().all(Option::is_none), "ray-cast");
+    assert!(raster.depth.iter().all(|&z| z == f64::INFINITY));
+    // the edge-on triangle's corners all land on the column boundary
+    // x = 24 (a whole number: no pixel centre is on it)
+    let projection = Projection {
+        camera: stage.world.camera,
+        width: 48,
+        height: 27,
+    };
+    for c in EDGE_ON {
+        let p = projection.to_pixels(projection.view(DVec3::from_array(*c)));
+        assert_eq!(p.x, 24.0, "{p}");
+    }
+    // with the floor and the wall in front, nothing changes where they are
+    let all = stage_with_all();
+    let (raster, _) = rasterize(&all);
+    assert!(
+        raster
+            .id
+            .iter()
+            .all(|&id| id == Some(0) || id == Some(1) || id.is_none())
+    );
+    assert_eq!(compare(&all, &raster, &raycast(&all)).elsewhere, []);
+}
+
+fn stage_with_all() -> Stage {
+    stage(&[
+        (FLOOR, "floor"),
+        (WALL, "wall"),
+        (BEHIND, "wall"),
+        (EDGE_ON, "wall"),
+    ])
+}
+
+/// A mesh's triangles of zero area (a repeated corner, three corners on a
+/// line) are left out of the stage, and counted.
+#[test]
+fn zero_area_mesh_triangles_are_skipped() {
+    let mesh = Mesh {
+        vertices: vec![
+            DVec3::new(-1.0, 0.5, -3.0),
+            DVec3::new(1.0, 0.5, -3.0),
+            DVec3::new(0.0, 1.5, -3.0),
+            DVec3::new(3.0, 0.5, -3.0),
+        ],
+        triangles: vec![[0, 1, 2], [0, 0, 2], [0, 1, 3], [2, 2, 2]],
+    };
+    let mut stage = stage(&[(FLOOR, "floor")]);
+    let skipped = stage.add_mesh(&mesh, 0);
+    assert_eq!(skipped, 3);
+    assert_eq!(stage.world.objects.len(), 2);
+    assert_eq!(stage.triangles.len(), 2);
+    assert_eq!(stage.triangles[1].object, 1);
+    let (raster, _) = rasterize(&stage);
+    assert!(raster.id.contains(&Some(1)), "the good triangle is drawn");
+}
