@@ -20,6 +20,7 @@ pub const CHAPTERS: &[ChapterFigures] = &[
     ("ch04", ch04::figures::all),
     ("ch05", ch05::figures::all),
     ("ch06", ch06::figures::all),
+    ("ch07", ch07::figures::all),
 ];
 
 /// What `raystep figures` was asked to do.

@@ -33,8 +33,9 @@ pub struct Measurement {
     /// How many steps the run reports, given the repeats.
     steps: fn(usize) -> u64,
     /// Runs with this many repeats per data point, calling back per step,
-    /// and returns the CSV text.
-    run: fn(usize, &mut dyn FnMut()) -> String,
+    /// and returns the CSV text, or what is missing (a message naming the
+    /// file).
+    run: fn(usize, &mut dyn FnMut()) -> Result<String, String>,
 }
 
 /// Every chapter's measurement, in lecture order.
@@ -49,7 +50,7 @@ pub const MEASUREMENTS: &[Measurement] = &[
         },
         run: |repeats, step| {
             let rows = ch04::measure::measure_acne(repeats, step);
-            ch04::measure::to_csv(&rows)
+            Ok(ch04::measure::to_csv(&rows))
         },
     },
     // Chapter 05: the stopping rules' error against render time.
@@ -60,7 +61,7 @@ pub const MEASUREMENTS: &[Measurement] = &[
         steps: |rounds| (ch05::measure::CHART_SCENES.len() * rounds) as u64,
         run: |repeats, step| {
             let rows = ch05::measure::measure_stopping(repeats, step);
-            ch05::measure::to_csv(&rows)
+            Ok(ch05::measure::to_csv(&rows))
         },
     },
     // Chapter 06: Schlick and no Fresnel split against the exact split.
@@ -71,7 +72,18 @@ pub const MEASUREMENTS: &[Measurement] = &[
         steps: |_| ch06::REFRACTIVE_INDICES.len() as u64,
         run: |repeats, step| {
             let rows = ch06::measure::measure_fresnel(repeats, step);
-            ch06::measure::to_csv(&rows)
+            Ok(ch06::measure::to_csv(&rows))
+        },
+    },
+    // Chapter 07: rasterizing and ray casting against the triangle count.
+    Measurement {
+        chapter: "ch07",
+        what: "ch07 scaling",
+        file: "scaling.csv",
+        steps: |rounds| ch07::measure::steps(rounds),
+        run: |repeats, step| {
+            let rows = ch07::measure::measure_scaling(repeats, step)?;
+            Ok(ch07::measure::to_csv(&rows))
         },
     },
 ];
@@ -93,6 +105,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         let bar = progress_bar((measurement.steps)(options.repeats), measurement.what);
         let csv = (measurement.run)(options.repeats, &mut || bar.inc(1));
         bar.finish_and_clear();
+        let csv = csv.map_err(|e| Error::Usage(format!("{}: {e}", measurement.chapter)))?;
         let path = out.join(measurement.chapter).join(measurement.file);
         write_atomically(&path, csv.as_bytes())?;
         println!("wrote {} ({} rows)", shown(&path), csv.lines().count() - 1);

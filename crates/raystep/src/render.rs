@@ -20,7 +20,12 @@ const RENDERERS: &[(&str, Renderer)] = &[
     ("ch04", render_ch04),
     ("ch05", render_ch05),
     ("ch06", render_ch06),
+    ("ch07", render_ch07),
 ];
+
+/// The renderer of a scene outside any chapter folder: the most complete
+/// tracer.
+const DEFAULT_RENDERER: &str = "ch06";
 
 /// Chapter 03: the local model, every light visible.
 fn render_ch03(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
@@ -49,6 +54,13 @@ fn render_ch06(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Ima
     let (image, _) = ch06::render(&world, &ch05::DEFAULT_STOP, ch06::Fresnel::Exact, options)
         .map_err(|e| e.to_string())?;
     Ok(image)
+}
+
+/// Chapter 07: rasterization with a z-buffer (polygons only).
+fn render_ch07(scene: &Scene, file: &str, _options: &RenderOptions) -> Result<Image, String> {
+    let stage = ch07::Stage::from_scene(scene, file).map_err(|e| e.to_string())?;
+    let (buffers, _) = ch07::rasterize(&stage);
+    Ok(buffers.color)
 }
 
 /// What `raystep render` was asked to do.
@@ -134,7 +146,14 @@ fn choose(chapter: Option<&str>, scene: &Path) -> Result<(&'static str, Renderer
                 .find(|(name, _)| folder.starts_with(name))
                 .copied()
         });
-    Ok(in_folder.unwrap_or(*RENDERERS.last().expect("at least one renderer")))
+    match in_folder {
+        Some(renderer) => Ok(renderer),
+        None => Ok(*crate::workspace::resolve(
+            DEFAULT_RENDERER,
+            RENDERERS,
+            |r| r.0,
+        )?),
+    }
 }
 
 fn default_out(scene: &Path) -> PathBuf {

@@ -121,3 +121,44 @@ fn a_bad_scene_is_one_error_line_and_no_file() {
         assert_eq!(String::from_utf8_lossy(&run.stderr).lines().count(), 1);
     }
 }
+
+/// Chapter 07's scenes are rasterized; a scene with a sphere cannot be,
+/// and the error names the file and the object.
+#[test]
+fn chapter_07_rasterizes_polygons_only() {
+    let dir = scratch("ch07");
+    let out = dir.join("shapes.png");
+    let run = raystep(&[
+        "render",
+        &scene("ch07-two-methods/scenes/shapes.toml"),
+        "--out",
+        out.to_str().unwrap(),
+        "--size",
+        "48x27",
+    ]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert!(String::from_utf8_lossy(&run.stdout).contains("ch07 renderer"));
+    assert_eq!(png_size(&fs::read(&out).unwrap()), (48, 27));
+
+    let out = dir.join("spheres.png");
+    let run = raystep(&[
+        "render",
+        &scene("ch03-illumination/scenes/spheres.toml"),
+        "--chapter",
+        "07",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!run.status.success());
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("spheres.toml: objects[0] is a sphere"),
+        "{stderr}"
+    );
+    assert!(!out.exists());
+}
