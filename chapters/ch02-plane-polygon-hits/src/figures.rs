@@ -4,6 +4,7 @@
 //! outside, who owns a shared edge, which polygon a pixel sees) comes from
 //! [`ray_plane`], [`edge_function`], [`inside_convex`], [`inside_crossing`]
 //! and [`hit_map`].
+use raystep_figure::numbers::signed;
 use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette};
 
 use crate::{
@@ -53,23 +54,6 @@ fn fmt(x: f64) -> String {
     match s.strip_prefix('-') {
         Some(rest) => format!("−{rest}"),
         None => s,
-    }
-}
-
-/// `x` with its sign always shown: `+8`, `−4.5`, `0`.
-fn signed(x: f64) -> String {
-    let short = format!("{}", x.abs());
-    let s = if short.len() <= 5 {
-        short
-    } else {
-        format!("{:.2}", x.abs())
-    };
-    if x > 0.0 {
-        format!("+{s}")
-    } else if x < 0.0 {
-        format!("−{s}")
-    } else {
-        s
     }
 }
 
@@ -294,7 +278,7 @@ fn inside_test() -> Figure {
         let along = if fr < 0.0 { 0.85 } else { 0.5 };
         page.label_sized(
             a + along * (b - a) - 0.08 * inward,
-            &format!("f_{}(Q) = {}", i + 1, signed(fq)),
+            &format!("f_{}(Q) = {}", i + 1, signed(fq, 5)),
             Anchor::pointing(-inward),
             16.0,
             INSIDE_COLOR,
@@ -308,7 +292,7 @@ fn inside_test() -> Figure {
     for (i, fr) in failing {
         page.label_sized(
             r,
-            &format!("f_{}(R) = {}", i + 1, signed(fr)),
+            &format!("f_{}(R) = {}", i + 1, signed(fr, 5)),
             Anchor::S,
             16.0,
             OUTSIDE_COLOR,

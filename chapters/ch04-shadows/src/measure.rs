@@ -6,6 +6,7 @@
 //! `book/src/figures/ch04/acne.csv`; `raystep figures` draws the chart
 //! from that file, so the figures stay byte-identical between runs.
 
+use raystep_render::csv::records;
 use raystep_render::timing::Timing;
 use raystep_render::{Progress, RenderOptions};
 
@@ -109,41 +110,18 @@ pub fn to_csv(rows: &[AcneRow]) -> String {
 
 /// Reads [`to_csv`]'s output back; an error names the line and what is wrong.
 pub fn from_csv(text: &str) -> Result<Vec<AcneRow>, String> {
-    let mut lines = text.lines().enumerate();
-    match lines.next() {
-        Some((_, header)) if header.trim() == CSV_HEADER => {}
-        _ => return Err(format!("line 1: expected the header `{CSV_HEADER}`")),
-    }
-    let mut rows = Vec::new();
-    for (i, line) in lines {
-        if line.trim().is_empty() {
-            continue;
-        }
-        let fields: Vec<&str> = line.split(',').collect();
-        let number = |k: usize, name: &str| -> Result<f64, String> {
-            fields[k]
-                .trim()
-                .parse::<f64>()
-                .ok()
-                .filter(|x| x.is_finite())
-                .ok_or_else(|| format!("line {}: {name} `{}` is not a number", i + 1, fields[k]))
-        };
-        if fields.len() != 5 {
-            return Err(format!(
-                "line {}: expected 5 fields, got {}",
-                i + 1,
-                fields.len()
-            ));
-        }
-        rows.push(AcneRow {
-            strategy: fields[0].trim().to_string(),
-            scale: number(1, "scale")?,
-            acne: number(2, "acne")?,
-            leaks: number(3, "leaks")?,
-            millis: number(4, "millis")?,
-        });
-    }
-    Ok(rows)
+    records(text, CSV_HEADER)?
+        .iter()
+        .map(|r| {
+            Ok(AcneRow {
+                strategy: r.text(0).to_string(),
+                scale: r.number(1, "scale")?,
+                acne: r.number(2, "acne")?,
+                leaks: r.number(3, "leaks")?,
+                millis: r.number(4, "millis")?,
+            })
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -4,6 +4,7 @@
 //! reflected direction from [`reflect_direction`], the ray trees from
 //! [`pixel_tree`] on the real facing mirrors, the renders, ray counts and
 //! errors from [`render`] and [`image_error`].
+use raystep_figure::numbers::fixed;
 use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette};
 use raystep_render::{Progress, RenderOptions};
 
@@ -45,11 +46,6 @@ const QUIET: RenderOptions = RenderOptions {
 /// A vector arrow.
 fn vector(color: Color) -> Stroke {
     Stroke::new(color).width(2.5)
-}
-
-/// `x` with `digits` decimals, with a real minus sign.
-fn fixed(x: f64, digits: usize) -> String {
-    format!("{x:.digits$}").replace('-', "−")
 }
 
 /// A 2D vector as `(x, y)` with two decimals.

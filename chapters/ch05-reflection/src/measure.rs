@@ -6,6 +6,7 @@
 //! `raystep measure` runs [`measure_stopping`] and writes [`to_csv`] into
 //! `book/src/figures/ch05/stopping.csv`; `raystep figures` draws the chart
 //! from that file, so the figures stay byte-identical between runs.
+use raystep_render::csv::records;
 use raystep_render::timing::Timing;
 use raystep_render::{Image, Progress, RenderOptions, srgb8};
 
@@ -270,52 +271,25 @@ pub fn to_csv(rows: &[StopRow]) -> String {
 
 /// Reads [`to_csv`]'s output back; an error names the line and what is wrong.
 pub fn from_csv(text: &str) -> Result<Vec<StopRow>, String> {
-    let mut lines = text.lines().enumerate();
-    match lines.next() {
-        Some((_, header)) if header.trim() == CSV_HEADER => {}
-        _ => return Err(format!("line 1: expected the header `{CSV_HEADER}`")),
-    }
-    let mut rows = Vec::new();
-    for (i, line) in lines {
-        if line.trim().is_empty() {
-            continue;
-        }
-        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
-        if fields.len() != 8 {
-            return Err(format!(
-                "line {}: expected 8 fields, got {}",
-                i + 1,
-                fields.len()
-            ));
-        }
-        let number = |k: usize, name: &str| -> Result<f64, String> {
-            fields[k]
-                .parse::<f64>()
-                .ok()
-                .filter(|x| x.is_finite())
-                .ok_or_else(|| format!("line {}: {name} `{}` is not a number", i + 1, fields[k]))
-        };
-        let count = |k: usize, name: &str| -> Result<u64, String> {
-            fields[k]
-                .parse::<u64>()
-                .map_err(|_| format!("line {}: {name} `{}` is not a count", i + 1, fields[k]))
-        };
-        let rule = fields[1];
-        if rule != DEPTH_RULE && rule != CONTRIBUTION_RULE {
-            return Err(format!("line {}: unknown rule `{rule}`", i + 1));
-        }
-        rows.push(StopRow {
-            scene: fields[0].to_string(),
-            rule: rule.to_string(),
-            parameter: number(2, "parameter")?,
-            rmse: number(3, "rmse")?,
-            max_error: number(4, "max_error")?,
-            rays: count(5, "rays")?,
-            secondary: count(6, "secondary")?,
-            millis: number(7, "millis")?,
-        });
-    }
-    Ok(rows)
+    records(text, CSV_HEADER)?
+        .iter()
+        .map(|r| {
+            let rule = r.text(1);
+            if rule != DEPTH_RULE && rule != CONTRIBUTION_RULE {
+                return Err(r.error(format!("unknown rule `{rule}`")));
+            }
+            Ok(StopRow {
+                scene: r.text(0).to_string(),
+                rule: rule.to_string(),
+                parameter: r.number(2, "parameter")?,
+                rmse: r.number(3, "rmse")?,
+                max_error: r.number(4, "max_error")?,
+                rays: r.count(5, "rays")?,
+                secondary: r.count(6, "secondary")?,
+                millis: r.number(7, "millis")?,
+            })
+        })
+        .collect()
 }
 
 #[cfg(test)]

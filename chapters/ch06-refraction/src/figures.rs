@@ -6,6 +6,7 @@
 //! [`schlick`], the renders from [`render`] with the exact Fresnel split,
 //! and which pixels of the bubble see total internal reflection from
 //! [`Media::cross`] and [`refract`] on the scene's own objects.
+use raystep_figure::numbers::fixed;
 use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette};
 use raystep_render::{Image, Progress, RenderOptions};
 
@@ -58,11 +59,6 @@ const QUIET: RenderOptions = RenderOptions {
 /// A vector arrow.
 fn vector(color: Color) -> Stroke {
     Stroke::new(color).width(2.5)
-}
-
-/// `x` with `digits` decimals, with a real minus sign.
-fn fixed(x: f64, digits: usize) -> String {
-    format!("{x:.digits$}").replace('-', "−")
 }
 
 /// An angle in degrees with one decimal.

@@ -11,6 +11,7 @@
 use std::hint::black_box;
 
 use ch05::measure::image_error;
+use raystep_render::csv::records;
 use raystep_render::timing::Timing;
 use raystep_render::{Progress, RenderOptions};
 use raystep_scene::Shape as ShapeSpec;
@@ -188,49 +189,25 @@ pub fn to_csv(rows: &[FresnelRow]) -> String {
 
 /// Reads [`to_csv`]'s output back; an error names the line and what is wrong.
 pub fn from_csv(text: &str) -> Result<Vec<FresnelRow>, String> {
-    let mut lines = text.lines().enumerate();
-    match lines.next() {
-        Some((_, header)) if header.trim() == CSV_HEADER => {}
-        _ => return Err(format!("line 1: expected the header `{CSV_HEADER}`")),
-    }
-    let mut rows = Vec::new();
-    for (i, line) in lines {
-        if line.trim().is_empty() {
-            continue;
-        }
-        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
-        if fields.len() != 8 {
-            return Err(format!(
-                "line {}: expected 8 fields, got {}",
-                i + 1,
-                fields.len()
-            ));
-        }
-        let number = |k: usize, name: &str| -> Result<f64, String> {
-            fields[k]
-                .parse::<f64>()
-                .ok()
-                .filter(|x| x.is_finite())
-                .ok_or_else(|| format!("line {}: {name} `{}` is not a number", i + 1, fields[k]))
-        };
-        let mode = fields[2];
-        if !CHART_MODES.iter().any(|(name, _)| *name == mode) {
-            return Err(format!("line {}: unknown mode `{mode}`", i + 1));
-        }
-        rows.push(FresnelRow {
-            material: fields[0].to_string(),
-            ior: number(1, "ior")?,
-            mode: mode.to_string(),
-            rmse: number(3, "rmse")?,
-            max_error: number(4, "max_error")?,
-            rays: fields[5]
-                .parse::<u64>()
-                .map_err(|_| format!("line {}: rays `{}` is not a count", i + 1, fields[5]))?,
-            millis: number(6, "millis")?,
-            nanos_per_call: number(7, "nanos_per_call")?,
-        });
-    }
-    Ok(rows)
+    records(text, CSV_HEADER)?
+        .iter()
+        .map(|r| {
+            let mode = r.text(2);
+            if !CHART_MODES.iter().any(|(name, _)| *name == mode) {
+                return Err(r.error(format!("unknown mode `{mode}`")));
+            }
+            Ok(FresnelRow {
+                material: r.text(0).to_string(),
+                ior: r.number(1, "ior")?,
+                mode: mode.to_string(),
+                rmse: r.number(3, "rmse")?,
+                max_error: r.number(4, "max_error")?,
+                rays: r.count(5, "rays")?,
+                millis: r.number(6, "millis")?,
+                nanos_per_call: r.number(7, "nanos_per_call")?,
+            })
+        })
+        .collect()
 }
 
 #[cfg(test)]

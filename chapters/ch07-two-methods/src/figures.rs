@@ -10,6 +10,7 @@
 //! [`raycast`], and the differing pixels from [`compare`].
 use ch02::{edge_function, owns_boundary};
 use raystep_core::Interval;
+use raystep_figure::numbers::{fixed, grouped, scientific, signed};
 use raystep_figure::{Anchor, Color, DVec2, Figure, Page, Stroke, palette};
 use raystep_render::{Image, srgb8};
 
@@ -51,71 +52,6 @@ const REJECT_COLOR: Color = palette::VERMILION;
 const NOTE_COLOR: Color = Color::rgb(85, 85, 85);
 /// Pixel grid lines.
 const GRID_COLOR: Color = Color::rgb(200, 200, 200);
-
-/// `x` with `digits` decimals and a real minus sign.
-fn fixed(x: f64, digits: usize) -> String {
-    format!("{x:.digits$}").replace('-', "−")
-}
-
-/// `x` with its sign always shown, as short as it is exact: `+8`, `−4.5`, `0`.
-fn signed(x: f64) -> String {
-    let short = format!("{}", x.abs());
-    let s = if short.len() <= 6 {
-        short
-    } else {
-        format!("{:.2}", x.abs())
-    };
-    if x > 0.0 {
-        format!("+{s}")
-    } else if x < 0.0 {
-        format!("−{s}")
-    } else {
-        s
-    }
-}
-
-/// `x` in scientific notation with one decimal, as label markup
-/// (`2.0×10^{−15}`) or, with `markup` false, in plain Unicode (`2.0 × 10⁻¹⁵`).
-fn scientific(x: f64, markup: bool) -> String {
-    if x == 0.0 {
-        return "0".to_string();
-    }
-    let exponent = x.abs().log10().floor() as i32;
-    let mantissa = x / 10f64.powi(exponent);
-    let (mantissa, exponent) = if (mantissa.abs() * 10.0).round() >= 100.0 {
-        (mantissa / 10.0, exponent + 1)
-    } else {
-        (mantissa, exponent)
-    };
-    let m = fixed(mantissa, 1);
-    let e = exponent.to_string().replace('-', "−");
-    if markup {
-        format!("{m}×10^{{{e}}}")
-    } else {
-        const SUPERSCRIPTS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
-        let e: String = e
-            .chars()
-            .map(|c| match c.to_digit(10) {
-                Some(d) => SUPERSCRIPTS[d as usize],
-                None => '⁻',
-            })
-            .collect();
-        format!("{m} × 10{e}")
-    }
-}
-
-/// A number with a thin space between thousands: 14 400.
-fn grouped(n: u64) -> String {
-    let digits = n.to_string();
-    let mut out = String::new();
-    for (k, c) in digits.chars().enumerate() {
-        if k > 0 && (digits.len() - k) % 3 == 0 {
-            out.push('\u{2009}');
-        }
-        out.push(c);
-    }
-    out
-}
 
 /// A light tint of a colour, for filled cells.
 fn tint(c: Color) -> Color {
@@ -760,7 +696,7 @@ fn coverage() -> Figure {
     let (a_owns, b_owns) = (owns_boundary(a_from, a_to), owns_boundary(b_from, b_to));
     assert!(b_owns && !a_owns, "B owns the shared edge");
     assert!(on_edge.iter().all(|&(_, b)| b), "B draws the shared edge");
-    let pair = |v: DVec2| format!("({}, {})", signed(v.x), signed(v.y));
+    let pair = |v: DVec2| format!("({}, {})", signed(v.x, 6), signed(v.y, 6));
 
     let x = side + gw + 24.0;
     let lines: Vec<(String, Color)> = vec![
@@ -775,9 +711,9 @@ fn coverage() -> Figure {
         (
             format!(
                 "at Q: f_1 = {}, f_2 = {}, f_3 = {}",
-                signed(fq[0]),
-                signed(fq[1]),
-                signed(fq[2])
+                signed(fq[0], 6),
+                signed(fq[1], 6),
+                signed(fq[2], 6)
             ),
             shade(cb),
         ),

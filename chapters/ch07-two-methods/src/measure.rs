@@ -13,6 +13,7 @@
 use std::path::{Path, PathBuf};
 
 use raystep_core::DVec3;
+use raystep_render::csv::records;
 use raystep_render::timing::Timing;
 
 use crate::{Mesh, MeshError, SHAPES, Stage, rasterize, raycast};
@@ -249,59 +250,36 @@ pub fn to_csv(rows: &[ScalingRow]) -> String {
 
 /// Reads [`to_csv`]'s output back; an error names the line and what is wrong.
 pub fn from_csv(text: &str) -> Result<Vec<ScalingRow>, String> {
-    let mut lines = text.lines().enumerate();
-    match lines.next() {
-        Some((_, header)) if header.trim() == CSV_HEADER => {}
-        _ => return Err(format!("line 1: expected the header `{CSV_HEADER}`")),
-    }
-    let mut rows = Vec::new();
-    for (i, line) in lines {
-        if line.trim().is_empty() {
-            continue;
-        }
-        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
-        if fields.len() != 7 {
-            return Err(format!(
-                "line {}: expected 7 fields, got {}",
-                i + 1,
-                fields.len()
-            ));
-        }
-        let count = |k: usize, name: &str| -> Result<u64, String> {
-            fields[k]
-                .parse::<u64>()
-                .map_err(|_| format!("line {}: {name} `{}` is not a count", i + 1, fields[k]))
-        };
-        let method = fields[2];
-        if method != RASTERIZE && method != RAYCAST {
-            return Err(format!("line {}: unknown method `{method}`", i + 1));
-        }
-        let millis = fields[6]
-            .parse::<f64>()
-            .ok()
-            .filter(|x| x.is_finite() && *x > 0.0)
-            .ok_or_else(|| {
-                format!(
-                    "line {}: millis `{}` is not a positive number",
-                    i + 1,
-                    fields[6]
-                )
-            })?;
-        let triangles = count(1, "triangles")?;
-        if triangles == 0 {
-            return Err(format!("line {}: no triangles", i + 1));
-        }
-        rows.push(ScalingRow {
-            scene: fields[0].to_string(),
-            triangles,
-            method: method.to_string(),
-            tests: count(3, "tests")?,
-            covered: count(4, "covered")?,
-            shaded: count(5, "shaded")?,
-            millis,
-        });
-    }
-    Ok(rows)
+    records(text, CSV_HEADER)?
+        .iter()
+        .map(|r| {
+            let method = r.text(2);
+            if method != RASTERIZE && method != RAYCAST {
+                return Err(r.error(format!("unknown method `{method}`")));
+            }
+            // a log–log chart has no place for 0 ms or 0 triangles
+            let millis = r
+                .number(6, "millis")
+                .ok()
+                .filter(|&x| x > 0.0)
+                .ok_or_else(|| {
+                    r.error(format!("millis `{}` is not a positive number", r.text(6)))
+                })?;
+            let triangles = r.count(1, "triangles")?;
+            if triangles == 0 {
+                return Err(r.error("no triangles"));
+            }
+            Ok(ScalingRow {
+                scene: r.text(0).to_string(),
+                triangles,
+                method: method.to_string(),
+                tests: r.count(3, "tests")?,
+                covered: r.count(4, "covered")?,
+                shaded: r.count(5, "shaded")?,
+                millis,
+            })
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -32,6 +32,7 @@ mod error;
 mod field;
 mod glyphs;
 mod image;
+pub mod numbers;
 mod output;
 mod page;
 mod projection;

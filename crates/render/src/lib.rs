@@ -23,6 +23,7 @@
 #![deny(missing_docs)]
 
 pub mod color;
+pub mod csv;
 mod error;
 mod image;
 mod parallel;

@@ -1,0 +1,109 @@
+//! Reading back the small CSV files behind the charts: `raystep measure`
+//! writes them, `raystep figures` draws from them. Plain comma-separated
+//! fields, one header line, no quoting; every error names the line.
+
+use std::fmt::Display;
+
+/// The data lines of `text`, whose first line must be `header`; blank lines
+/// are skipped. An error names the line: a wrong header, or a line without
+/// one field per column of the header.
+pub fn records<'a>(text: &'a str, header: &str) -> Result<Vec<Record<'a>>, String> {
+    let mut lines = text.lines().enumerate();
+    match lines.next() {
+        Some((_, first)) if first.trim() == header => {}
+        _ => return Err(format!("line 1: expected the header `{header}`")),
+    }
+    let columns = header.split(',').count();
+    lines
+        .filter(|(_, line)| !line.trim().is_empty())
+        .map(|(i, line)| {
+            let record = Record {
+                line: i + 1,
+                fields: line.split(',').map(str::trim).collect(),
+            };
+            if record.fields.len() == columns {
+                Ok(record)
+            } else {
+                Err(record.error(format!(
+                    "expected {columns} fields, got {}",
+                    record.fields.len()
+                )))
+            }
+        })
+        .collect()
+}
+
+/// One data line: its number in the file (from 1) and its trimmed fields,
+/// as many as the header has columns.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Record<'a> {
+    /// The line's number in the file, from 1.
+    pub line: usize,
+    fields: Vec<&'a str>,
+}
+
+impl<'a> Record<'a> {
+    /// Field `k` as it is written.
+    pub fn text(&self, k: usize) -> &'a str {
+        self.fields[k]
+    }
+
+    /// Field `k` as a finite number; the error calls it `name`.
+    pub fn number(&self, k: usize, name: &str) -> Result<f64, String> {
+        self.fields[k]
+            .parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| self.error(format!("{name} `{}` is not a number", self.fields[k])))
+    }
+
+    /// Field `k` as a count (a whole number ≥ 0); the error calls it `name`.
+    pub fn count(&self, k: usize, name: &str) -> Result<u64, String> {
+        self.fields[k]
+            .parse::<u64>()
+            .map_err(|_| self.error(format!("{name} `{}` is not a count", self.fields[k])))
+    }
+
+    /// `message` on this line: `line 4: message`.
+    pub fn error(&self, message: impl Display) -> String {
+        format!("line {}: {message}", self.line)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fields_numbers_counts_and_errors_name_the_line() {
+        let text = "a,b,c\n x , 1.5,7\n\ny,-2e3,0\n";
+        let rows = records(text, "a,b,c").unwrap();
+        assert_eq!(rows.len(), 2);
+        assert_eq!((rows[0].line, rows[0].text(0)), (2, "x"));
+        assert_eq!(rows[0].number(1, "b"), Ok(1.5));
+        assert_eq!(rows[0].count(2, "c"), Ok(7));
+        assert_eq!(rows[1].line, 4);
+        assert_eq!(rows[1].number(1, "b"), Ok(-2000.0));
+        assert_eq!(
+            rows[1].count(1, "b"),
+            Err("line 4: b `-2e3` is not a count".to_string())
+        );
+        assert_eq!(
+            records("a,b\n1,nan\n", "a,b").unwrap()[0].number(1, "b"),
+            Err("line 2: b `nan` is not a number".to_string())
+        );
+        assert_eq!(
+            records("a,b,c\n1,2\n", "a,b,c"),
+            Err("line 2: expected 3 fields, got 2".to_string())
+        );
+        assert_eq!(
+            records("x,y\n", "a,b"),
+            Err("line 1: expected the header `a,b`".to_string())
+        );
+        assert_eq!(
+            records("", "a,b"),
+            Err("line 1: expected the header `a,b`".to_string())
+        );
+        assert_eq!(records("a,b\n", "a,b"), Ok(vec![]));
+    }
+}
