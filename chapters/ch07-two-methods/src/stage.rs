@@ -25,7 +25,7 @@ pub enum StageError {
     World(#[from] ch03::WorldError),
     /// An object is not a polygon: a rasterizer draws triangles only.
     #[error(
-        "{file}: objects[{index}] is a {kind}: chapter 07 draws polygons only (a sphere becomes an icosphere mesh, a plane a large polygon)"
+        "{file}: objects[{index}] is a {kind}: chapter 07 rasterizes polygons only; write it as polygons, or render it with a ray tracer (--chapter 06)"
     )]
     NotAPolygon {
         /// The scene file.
