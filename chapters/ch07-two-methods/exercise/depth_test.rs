@@ -35,8 +35,8 @@ impl DepthBuffer {
     /// The z test: is a surface at depth `z` closer than what pixel
     /// (column, row) shows? If so it is kept (the buffer remembers `z`)
     /// and the caller shades the pixel; if not, the buffer is unchanged.
-    /// A tie keeps what was drawn first, so the result does not depend on
-    /// rounding in the comparison. NaN is never closer.
+    /// A tie keeps what was drawn first (of two coincident surfaces, the
+    /// drawing order decides). NaN is never closer.
     pub fn test_and_set(&mut self, column: u32, row: u32, z: f64) -> bool {
         // TODO:
         // 1. The index of the pixel (self.index(column, row)).

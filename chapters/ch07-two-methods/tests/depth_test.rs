@@ -37,11 +37,11 @@ fn the_closer_surface_wins() {
         (INF, false, 2.5 - 1e-15),
     ];
     for (i, (z, kept, holds)) in steps.into_iter().enumerate() {
+        let before = buffer.get(1, 2);
         assert_eq!(
             buffer.test_and_set(1, 2, z),
             kept,
-            "step {i}: drawing depth {z} over {}",
-            buffer.get(1, 2)
+            "step {i}: drawing depth {z} over {before}"
         );
         assert_eq!(buffer.get(1, 2), holds, "step {i}: the depth kept");
     }
