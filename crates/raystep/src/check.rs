@@ -280,6 +280,10 @@ fn cargo_failure(stderr: &str) -> CargoFailure {
             let mut error = lines[i].to_string();
             if let Some(at) = lines.get(i + 1).and_then(|l| l.trim().strip_prefix("--> ")) {
                 error.push_str(&format!(" (at {})", at.replace("src/../", "")));
+            } else if let Some(why) = compiler_stopped(&lines[i..]) {
+                // No diagnostic: the compiler itself was killed (out of memory,
+                // a full disk). Cargo says how under "Caused by".
+                error.push_str(&format!("; the compiler stopped ({why})"));
             }
             CargoFailure::DoesNotCompile(error)
         }
@@ -292,6 +296,16 @@ fn cargo_failure(stderr: &str) -> CargoFailure {
                 .map_or("no tests ran".to_string(), |l| l.trim().to_string()),
         ),
     }
+}
+
+/// How a compiler process ended, from cargo's "Caused by: process didn't exit
+/// successfully: `rustc …` (signal: 7, SIGBUS: …)": the text in the last brackets.
+fn compiler_stopped(lines: &[&str]) -> Option<String> {
+    let line = lines
+        .iter()
+        .find(|l| l.contains("process didn't exit successfully:"))?;
+    let (_, how) = line.trim_end().rsplit_once("` (")?;
+    Some(how.strip_suffix(')').unwrap_or(how).to_string())
 }
 
 /// Splits the binaries' stdout at each `running N tests` line.
@@ -728,6 +742,16 @@ mod tests {
         assert_eq!(
             failure.to_string(),
             "the tests do not compile: error[E0308]: mismatched types (at exercise/ex.rs:3:26)"
+        );
+    }
+
+    #[test]
+    fn a_killed_compiler_is_reported_with_how_it_stopped() {
+        let failure = parse("", include_str!("../testdata/compiler-killed.stderr")).unwrap_err();
+        assert_eq!(
+            failure.to_string(),
+            "the tests do not compile: error: could not compile `ch07-two-methods` (test \"render\"); \
+             the compiler stopped (signal: 7, SIGBUS: access to undefined memory)"
         );
     }
 

@@ -74,14 +74,14 @@ fn check(args: &[&str]) -> (bool, String, String) {
 }
 
 /// The verdict printed for `exercise`: the text after its name.
-fn verdict<'a>(report: &'a str, exercise: &str) -> &'a str {
+fn verdict<'a>(report: &'a str, stderr: &str, exercise: &str) -> &'a str {
     report
         .lines()
         .find_map(|line| {
             let rest = line.strip_prefix("  ")?.strip_prefix(exercise)?;
             rest.starts_with(' ').then(|| rest.trim())
         })
-        .unwrap_or_else(|| panic!("no line for exercise {exercise} in:\n{report}"))
+        .unwrap_or_else(|| panic!("no line for exercise {exercise} in:\n{report}{stderr}"))
 }
 
 #[test]
@@ -90,7 +90,7 @@ fn the_reference_passes_and_the_stubs_do_not() {
         let (ok, report, stderr) = check(&[&chapter, "--reference"]);
         for exercise in &exercises {
             assert_eq!(
-                verdict(&report, exercise),
+                verdict(&report, &stderr, exercise),
                 "passed",
                 "{chapter} reference:\n{report}{stderr}"
             );
@@ -103,7 +103,7 @@ fn the_reference_passes_and_the_stubs_do_not() {
 
         let (ok, report, stderr) = check(&[&chapter]);
         for exercise in &exercises {
-            let verdict = verdict(&report, exercise);
+            let verdict = verdict(&report, &stderr, exercise);
             assert!(
                 verdict == "not attempted" || verdict.starts_with("failed: "),
                 "{chapter}: the stub of {exercise} is {verdict:?}:\n{report}{stderr}"
