@@ -130,12 +130,18 @@ impl World {
     /// The lecture's loop over objects: the closest hit of `ray` within
     /// `interval`, and the object hit.
     pub fn closest_hit(&self, ray: &Ray, interval: Interval) -> Option<(Hit, &Object)> {
+        let (hit, index) = self.closest_index(ray, interval)?;
+        Some((hit, &self.objects[index]))
+    }
+
+    /// The same loop, naming the object hit by its index in `objects`.
+    pub fn closest_index(&self, ray: &Ray, interval: Interval) -> Option<(Hit, usize)> {
         let mut closest = None;
         let mut interval = interval;
-        for object in &self.objects {
+        for (index, object) in self.objects.iter().enumerate() {
             if let Some(hit) = object.shape.intersect(ray, interval) {
                 interval = interval.with_max(hit.t); // only closer hits from now on
-                closest = Some((hit, object));
+                closest = Some((hit, index));
             }
         }
         closest

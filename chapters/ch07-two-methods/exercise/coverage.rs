@@ -17,7 +17,8 @@ use raystep_core::DVec2;
 pub fn covers(corners: &[DVec2; 3], p: DVec2) -> bool {
     // TODO:
     // 1. The signed area: edge_function(a, b, c). Zero: return false.
-    // 2. Walk the edges so that the inside is on their left: a→b, b→c, c→a
+    // 2. Walk the edges so that the inside is on their positive side (where
+    //    edge_function > 0, as c is for a → b): a→b, b→c, c→a
     //    for a positive area, a→c, c→b, b→a for a negative one.
     // 3. Covered if every edge function f = edge_function(from, to, p) is
     //    > 0, or == 0 on an edge with owns_boundary(from, to).

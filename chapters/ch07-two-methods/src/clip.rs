@@ -20,9 +20,12 @@ pub fn clip_near(corners: [DVec3; 3]) -> Vec<DVec3> {
             out.push(a);
         }
         if a_in != b_in {
-            // where the edge a → b crosses z = NEAR
-            let t = (NEAR - a.z) / (b.z - a.z);
-            let mut p = a + (b - a) * t;
+            // Where the edge crosses z = NEAR, computed from its corner in
+            // front: a neighbour walking the shared edge the other way gets
+            // the same corner bit for bit, so the fill rule still holds.
+            let (front, back) = if a_in { (a, b) } else { (b, a) };
+            let t = (NEAR - front.z) / (back.z - front.z);
+            let mut p = front + (back - front) * t;
             p.z = NEAR; // exactly on the plane, whatever the rounding
             out.push(p);
         }
@@ -58,5 +61,29 @@ mod tests {
         let tri = clip_near(two);
         assert_eq!(tri.len(), 3);
         assert_eq!(tri.iter().filter(|v| v.z == NEAR).count(), 2);
+    }
+
+    #[test]
+    fn neighbours_get_the_same_corner_on_a_shared_clipped_edge() {
+        // The edge p → q crosses the near plane; one triangle walks it p → q,
+        // its neighbour q → p. Both must cut it at the same point, bit for bit.
+        let p = DVec3::new(0.3, -0.7, 2.9);
+        let q = DVec3::new(-1.1, 0.45, -0.37);
+        let (left, right) = (DVec3::new(-2.0, 1.0, 3.0), DVec3::new(2.0, -1.0, 1.7));
+        let cut = |corners| {
+            let out = clip_near(corners);
+            out.iter()
+                .copied()
+                .filter(|v| v.z == NEAR)
+                .collect::<Vec<_>>()
+        };
+        let one = cut([p, q, left]);
+        let other = cut([q, p, right]);
+        let on_edge = |v: &DVec3| other.iter().any(|w| w.to_array() == v.to_array());
+        assert_eq!(
+            one.iter().filter(|v| on_edge(v)).count(),
+            1,
+            "{one:?} {other:?}"
+        );
     }
 }

@@ -22,7 +22,8 @@ pub fn covers(corners: &[DVec2; 3], p: DVec2) -> bool {
     if area == 0.0 {
         return false;
     }
-    // Step 2: walk the edges so that the inside is on their left.
+    // Step 2: walk the edges so that the inside is on their positive
+    // side (where edge_function > 0, as c is for a → b).
     let edges = if area > 0.0 {
         [(a, b), (b, c), (c, a)]
     } else {

@@ -15,7 +15,7 @@ use raystep_figure::{Anchor, Color, DVec2, Figure, Page, Stroke, palette};
 use raystep_render::{Image, srgb8};
 
 use crate::{
-    Buffers, DepthBuffer, Projection, Stage, barycentric, clip_near, compare, covers,
+    Buffers, DepthBuffer, Mesh, Projection, Stage, barycentric, clip_near, compare, covers,
     perspective_depth, rasterize, raycast, shapes,
 };
 
@@ -515,7 +515,7 @@ fn loops() -> Figure {
     Figure::new(
         "loops",
         &format!(
-            "The lecture's two loops on the same three triangles at {w} × {h} pixels (A at the back, B in front, C between them; outlines: the triangles on screen). Left, rasterization in object order: triangle by triangle, the rasterizer tests the pixel centres of its bounding box, and numbers the ones it covers in the order it visits them; the z test rejects the pixels of C that B hides (×), and B draws over A (struck out). Right, ray casting in image order: pixel by pixel, the ray is tested against every triangle and the closest hit is kept. Both end with the same image: {shown} pixels of the {pixels} show a triangle."
+            "The lecture's two loops on the same three triangles at {w} × {h} pixels (A at the back, B in front, C between them; outlines: the triangles on screen). Left, rasterization in object order: triangle by triangle, the rasterizer tests the pixel centres of its bounding box, and numbers the ones it covers in the order it visits them; the z test rejects the pixels of C that B hides (×), and B and C draw over A (struck out). Right, ray casting in image order: pixel by pixel, the ray is tested against every triangle and the closest hit is kept. Both end with the same image: {shown} pixels of the {pixels} show a triangle."
         ),
         page,
     )
@@ -530,8 +530,8 @@ const SHARED_E: DVec2 = DVec2::new(12.0, 3.25);
 const A_CORNER: DVec2 = DVec2::new(3.25, 0.75);
 const B_CORNER: DVec2 = DVec2::new(12.75, 9.5);
 
-/// The edges of a triangle as [`covers`] walks them: inside on the left
-/// (every edge function positive inside).
+/// The edges of a triangle as [`covers`] walks them: inside on their
+/// positive side (every edge function positive inside).
 fn inner_edges(corners: &[DVec2; 3]) -> [(DVec2, DVec2); 3] {
     let [a, b, c] = *corners;
     if edge_function(a, b, c) > 0.0 {
@@ -657,14 +657,14 @@ fn coverage() -> Figure {
     page.label_sized(grid.at(SHARED_S), "S", Anchor::SW, 16.0, palette::BLACK);
     page.label_sized(grid.at(SHARED_E), "E", Anchor::NE, 16.0, palette::BLACK);
     page.label_sized(
-        grid.at(DVec2::new(3.6, 3.6)),
+        grid.at(DVec2::new(4.0, 3.0)), // a cell corner: no centre hidden
         "A",
         Anchor::Center,
         22.0,
         shade(ca),
     );
     page.label_sized(
-        grid.at(DVec2::new(10.3, 7.2)),
+        grid.at(DVec2::new(10.0, 7.0)),
         "B",
         Anchor::Center,
         22.0,
@@ -794,7 +794,8 @@ fn rgb8(width: u32, height: u32, pixel: impl Fn(u32, u32) -> Color) -> Vec<u8> {
 /// The z-buffer of the shapes scene as a depth image, beside the colours.
 fn depth() -> Figure {
     let (w, h) = (320, 180);
-    let stage = shapes(2, w, h);
+    let subdivisions = 2;
+    let stage = shapes(subdivisions, w, h);
     let (buffers, counts) = rasterize(&stage);
     let finite: Vec<f64> = buffers
         .depth
@@ -931,7 +932,7 @@ fn depth() -> Figure {
         "depth",
         &format!(
             "The shapes scene (with a ball of {} triangles) rasterized at {w} × {h}: left the colour buffer, right the depth buffer it was drawn with, the view depth z of what each pixel shows in grey from black (z = {}) to white (z = {}); where nothing is drawn the buffer keeps its +∞.",
-            counts.triangles - 10,
+            Mesh::icosphere(subdivisions).triangles.len(),
             fixed(near, 2),
             fixed(far, 2)
         ),

@@ -12,18 +12,15 @@ pub fn raycast(stage: &Stage) -> Buffers {
     let world = &stage.world;
     let (width, height) = (world.width, world.height);
     let mut buffers = Buffers::new(width, height, world.background);
-    let first = world.objects.as_ptr().addr();
-    let size = std::mem::size_of::<ch03::Object>();
     // For each pixel …
     for row in 0..height {
         for column in 0..width {
             // Step 1: shoot the ray through its centre.
             let ray = world.camera.pixel_ray(column, row, width, height);
             // Step 2: for each object, test it; keep the closest.
-            let Some((hit, object)) = world.closest_hit(&ray, Interval::FORWARD) else {
+            let Some((hit, index)) = world.closest_index(&ray, Interval::FORWARD) else {
                 continue;
             };
-            let index = (std::ptr::from_ref(object).addr() - first) / size;
             // Step 3: shade; note the depth along the view direction.
             let i = row as usize * width as usize + column as usize;
             buffers.id[i] = Some(index);

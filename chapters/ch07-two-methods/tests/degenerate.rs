@@ -177,3 +177,62 @@ fn zero_area_mesh_triangles_are_skipped() {
     let (raster, _) = rasterize(&stage);
     assert!(raster.id.contains(&Some(1)), "the good triangle is drawn");
 }
+
+/// A floor of 24 triangles around a hub behind the eye: the spokes ahead
+/// cross the near plane, each clipped once from either side. The clipped
+/// fan still covers the floor's pixels exactly once: no gaps
+/// where two clipped triangles meet, no pixel covered twice.
+#[test]
+fn a_fan_cut_by_the_near_plane_stays_watertight() {
+    let hub = [0.37, 0.0, 3.1];
+    let half = 30.0;
+    // the square's outline, 6 points a side, counter-clockwise from above
+    let mut ring = Vec::new();
+    for k in 0..6 {
+        let s = -half + 2.0 * half * f64::from(k) / 6.0;
+        ring.push([s, 0.0, half]);
+        ring.push([half, 0.0, -s]);
+        ring.push([-s, 0.0, -half]);
+        ring.push([-half, 0.0, s]);
+    }
+    let angle = |p: &[f64; 3]| (p[2] - hub[2]).atan2(p[0] - hub[0]);
+    ring.sort_by(|a, b| angle(a).total_cmp(&angle(b)));
+    let triangles: Vec<[[f64; 3]; 3]> = (0..ring.len())
+        .map(|i| [hub, ring[i], ring[(i + 1) % ring.len()]])
+        .collect();
+    let objects: Vec<(&[[f64; 3]], &str)> =
+        triangles.iter().map(|t| (t.as_slice(), "floor")).collect();
+    let stage = stage(&objects);
+    let (_, across, _) = clip_cases(&stage);
+    assert!(across >= 8, "triangles across the near plane: {across}");
+    let (raster, counts) = rasterize(&stage);
+
+    // which pixels' rays meet the floor well inside (gaps) or well outside
+    // (overreach) the square; the pixels near its far edge are left out
+    let world = &stage.world;
+    let (mut inside, mut gaps, mut overreach) = (0, 0, 0);
+    for row in 0..world.height {
+        for column in 0..world.width {
+            let ray = world
+                .camera
+                .pixel_ray(column, row, world.width, world.height);
+            let t = -ray.origin.y / ray.direction.y;
+            let p = ray.origin + ray.direction * t;
+            let drawn = raster.id_at(column, row).is_some();
+            if t > 0.0 && p.x.abs().max(p.z.abs()) < 0.8 * half {
+                inside += 1;
+                gaps += usize::from(!drawn);
+            } else if t <= 0.0 || p.x.abs().max(p.z.abs()) > 1.25 * half {
+                overreach += usize::from(drawn);
+            }
+        }
+    }
+    assert!(inside > 48 * 27 / 3, "floor pixels: {inside}");
+    assert_eq!(
+        (gaps, overreach),
+        (0, 0),
+        "(gaps, pixels drawn off the floor)"
+    );
+    let drawn = raster.id.iter().filter(|id| id.is_some()).count() as u64;
+    assert_eq!(counts.covered, drawn, "pixels covered twice");
+}
