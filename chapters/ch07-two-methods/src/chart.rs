@@ -110,7 +110,8 @@ pub struct Method<'a> {
     pub bunny: Option<&'a ScalingRow>,
     /// The fit over `balls` (the bunny is left out: it checks the fit).
     pub fit: PowerFit,
-    /// The fixed-plus-per-triangle fit over `balls`.
+    /// The fixed-plus-per-triangle fit over `balls` (the chart draws the
+    /// rasterizer's, whose time is not a power law).
     pub cost: CostFit,
 }
 
@@ -204,6 +205,23 @@ fn draw(
         .light_line_style(WHITE)
         .draw()?;
 
+    // the rasterizer's cost model, dashed, under everything else: a curve
+    // on these axes, through 65 points spaced evenly in log N
+    let (first, last) = (
+        at(raster.balls[0]).0,
+        at(raster.balls[raster.balls.len() - 1]).0,
+    );
+    let curve = (0..=64).map(|i| {
+        let n = first * (last / first).powf(f64::from(i) / 64.0);
+        (n, raster.cost.at(n))
+    });
+    c.draw_series(DashedLineSeries::new(
+        curve,
+        7,
+        5,
+        RASTERIZE_COLOUR.stroke_width(2),
+    ))?;
+
     for (method, colour) in [(cast, RAYCAST_COLOUR), (raster, RASTERIZE_COLOUR)] {
         // the fit, a pale line, over the points it was fitted to (a straight
         // line on these axes: its two ends)
@@ -213,15 +231,6 @@ fn draw(
         );
         let fitted = [first, last].map(|n| (n, method.fit.at(n)));
         c.draw_series(LineSeries::new(fitted, colour.mix(0.55).stroke_width(3)))?;
-        if std::ptr::eq(method, raster) {
-            // the rasterizer's cost model, a curve on these axes
-            let steps = 64;
-            let curve = (0..=steps).map(|i| {
-                let n = first * (last / first).powf(f64::from(i) / f64::from(steps));
-                (n, method.cost.at(n))
-            });
-            c.draw_series(DashedLineSeries::new(curve, 7, 5, colour.stroke_width(2)))?;
-        }
         // the points: the balls as dots, the bunny as a triangle
         c.draw_series(
             method

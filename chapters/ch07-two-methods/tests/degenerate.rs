@@ -180,8 +180,8 @@ fn zero_area_mesh_triangles_are_skipped() {
 
 /// A floor of 24 triangles around a hub behind the eye: the spokes ahead
 /// cross the near plane, each clipped once from either side. The clipped
-/// fan still covers the floor's pixels exactly once: no gaps
-/// where two clipped triangles meet, no pixel covered twice.
+/// fan still covers the floor's pixels exactly once: no gaps where two
+/// clipped triangles meet, no pixel covered twice.
 #[test]
 fn a_fan_cut_by_the_near_plane_stays_watertight() {
     let hub = [0.37, 0.0, 3.1];

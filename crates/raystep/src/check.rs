@@ -240,11 +240,8 @@ fn targets(stderr: &str) -> Vec<(Target, Option<String>)> {
             targets.push((target, None));
         } else if line.starts_with("Doc-tests ") {
             targets.push((Target::Doc, None));
-        } else if let Some(why) = line.strip_prefix("process didn't exit successfully: ") {
+        } else if let Some(why) = exit_reason(line) {
             if let Some((_, crash @ None)) = targets.last_mut() {
-                let why = why
-                    .rsplit_once("` (")
-                    .map_or(why, |(_, w)| w.trim_end_matches(')'));
                 *crash = Some(format!("the test binary crashed ({why})"));
             }
         }
@@ -280,7 +277,7 @@ fn cargo_failure(stderr: &str) -> CargoFailure {
             let mut error = lines[i].to_string();
             if let Some(at) = lines.get(i + 1).and_then(|l| l.trim().strip_prefix("--> ")) {
                 error.push_str(&format!(" (at {})", at.replace("src/../", "")));
-            } else if let Some(why) = compiler_stopped(&lines[i..]) {
+            } else if let Some(why) = lines[i..].iter().find_map(|l| exit_reason(l)) {
                 // No diagnostic: the compiler itself was killed (out of memory,
                 // a full disk). Cargo says how under "Caused by".
                 error.push_str(&format!("; the compiler stopped ({why})"));
@@ -298,14 +295,17 @@ fn cargo_failure(stderr: &str) -> CargoFailure {
     }
 }
 
-/// How a compiler process ended, from cargo's "Caused by: process didn't exit
-/// successfully: `rustc …` (signal: 7, SIGBUS: …)": the text in the last brackets.
-fn compiler_stopped(lines: &[&str]) -> Option<String> {
-    let line = lines
-        .iter()
-        .find(|l| l.contains("process didn't exit successfully:"))?;
-    let (_, how) = line.trim_end().rsplit_once("` (")?;
-    Some(how.strip_suffix(')').unwrap_or(how).to_string())
+/// How a process that cargo ran (a test binary, the compiler) ended, from
+/// cargo's "process didn't exit successfully: `…` (signal: 7, SIGBUS: …)":
+/// the text in the last brackets.
+fn exit_reason(line: &str) -> Option<&str> {
+    let why = line
+        .trim()
+        .strip_prefix("process didn't exit successfully: ")?;
+    Some(
+        why.rsplit_once("` (")
+            .map_or(why, |(_, w)| w.trim_end_matches(')')),
+    )
 }
 
 /// Splits the binaries' stdout at each `running N tests` line.
