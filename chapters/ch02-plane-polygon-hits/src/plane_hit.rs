@@ -1,6 +1,6 @@
 use crate::ray_plane;
 use ch01::Plane;
-use raystep_core::{Hit, Interval, Ray};
+use raystep_core::{Aabb, Hit, Interval, Ray, Shape};
 
 // ANCHOR: cases
 /// What a ray does at a plane: the lecture's cases.
@@ -36,4 +36,20 @@ pub fn intersect_plane(plane: &Plane, ray: &Ray, interval: Interval) -> Option<H
         point: ray.at(t),
         normal: plane.normal,
     })
+}
+
+/// A plane as an object of a scene (chapter 03 on): chapter 01's plane, hit
+/// by [`intersect_plane`], with no bounds. (A newtype, because the plane
+/// itself is chapter 01's and knows nothing of rays.)
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InfinitePlane(pub Plane);
+
+impl Shape for InfinitePlane {
+    fn intersect(&self, ray: &Ray, interval: Interval) -> Option<Hit> {
+        intersect_plane(&self.0, ray, interval)
+    }
+
+    fn bounds(&self) -> Aabb {
+        Aabb::EVERYTHING
+    }
 }

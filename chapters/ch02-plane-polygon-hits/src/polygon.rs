@@ -1,6 +1,6 @@
 use crate::{dominant_axis, inside_convex, inside_crossing, project, ray_plane};
 use ch01::{Degenerate, Plane};
-use raystep_core::{DVec2, DVec3, Hit, Interval, Ray};
+use raystep_core::{Aabb, DVec2, DVec3, Hit, Interval, Ray, Shape};
 use thiserror::Error;
 
 /// Why a list of points is no polygon.
@@ -103,6 +103,18 @@ impl Polygon {
         })
     }
     // ANCHOR_END: intersect
+}
+
+/// A polygon as an object of a scene (chapter 03 on): its hit, and the box
+/// around its vertices.
+impl Shape for Polygon {
+    fn intersect(&self, ray: &Ray, interval: Interval) -> Option<Hit> {
+        Polygon::intersect(self, ray, interval)
+    }
+
+    fn bounds(&self) -> Aabb {
+        Aabb::around(self.vertices.iter().copied())
+    }
 }
 
 /// The plane through the first three vertices that fix one, with its normal

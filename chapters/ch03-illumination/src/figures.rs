@@ -8,9 +8,9 @@ use std::path::Path;
 use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette};
 use raystep_render::{Progress, RenderOptions, srgb8};
 
-use crate::{
-    Interval, Ray, ShadingTerms, Shape, Terms, World, reflect, render, render_with, shade,
-};
+use raystep_scene::{Scene, Shape as ShapeSpec};
+
+use crate::{Interval, Ray, ShadingTerms, Terms, World, reflect, render, render_with, shade};
 
 /// Every figure of this chapter, in the order the lecture shows them.
 pub fn all() -> Vec<Figure> {
@@ -25,10 +25,15 @@ const EYE_COLOR: Color = palette::GREEN;
 const REFLECT_COLOR: Color = palette::PURPLE;
 const REFRACT_COLOR: Color = palette::SKY_BLUE;
 
+/// The chapter's scene file, which the side views draw.
+fn spheres_scene() -> Scene {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/spheres.toml");
+    raystep_scene::load(&path).expect("the chapter's scene loads")
+}
+
 /// The chapter's scene, as `raystep render` reads it.
 fn spheres() -> World {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/spheres.toml");
-    World::load(&path).expect("the chapter's scene loads")
+    crate::world(&spheres_scene(), "spheres.toml").expect("the chapter's scene builds")
 }
 
 /// Renders without a progress bar (the image is the same for any number of threads).
@@ -112,6 +117,7 @@ impl SideView {
 
 /// For each pixel: shoot a ray, find the closest hit, shade it. A side view of the real camera.
 fn basic_idea() -> Figure {
+    let scene = spheres_scene();
     let world = spheres();
     let camera = world.camera;
     // the middle column of a 10-row image (u = 1/2): its rays lie in the vertical plane of the eye
@@ -124,21 +130,25 @@ fn basic_idea() -> Figure {
         .margin(16.0)
         .view(DVec2::new(-0.6, -1.9), DVec2::new(9.2, 3.0));
     // the floor and the other planes, and the spheres the plane cuts
-    for object in &world.objects {
-        let fill = colour(world.materials[object.material].kd);
+    for object in &scene.objects {
+        let fill = colour(scene.materials[object.material].kd);
         match &object.shape {
-            Shape::Sphere(s) => {
-                let d = view.off(s.center);
-                if d.abs() < s.radius {
+            ShapeSpec::Sphere { center, radius } => {
+                let d = view.off(*center);
+                if d.abs() < *radius {
                     page.circle_alpha(
-                        view.at(s.center),
-                        (s.radius * s.radius - d * d).sqrt(),
+                        view.at(*center),
+                        (radius * radius - d * d).sqrt(),
                         Some(fill.with_alpha(0.35)),
                         Some(&Stroke::new(fill).width(2.0)),
                     );
                 }
             }
-            Shape::Plane(plane) => {
+            ShapeSpec::Plane { point, normal } => {
+                let plane = ch02::Plane {
+                    normal: *normal,
+                    d: -normal.dot(*point),
+                };
                 // n·P + d = 0 along the view: a line with normal (n·along, n.y)
                 let g = view.dir(plane.normal);
                 let c = plane.normal.dot(view.point(DVec2::ZERO)) + plane.d;
@@ -149,7 +159,7 @@ fn basic_idea() -> Figure {
                     "the line lies on the plane"
                 );
             }
-            Shape::Polygon(_) => {} // the scene has none
+            ShapeSpec::Polygon { .. } => {} // the scene has none
         }
     }
 
@@ -159,7 +169,7 @@ fn basic_idea() -> Figure {
         let from = view.at(ray.origin);
         let dir = view.dir(ray.direction);
         match world.closest_hit(&ray, Interval::FORWARD) {
-            Some((hit, object)) => {
+            Some((object, hit)) => {
                 hits += 1;
                 let at = view.at(hit.point);
                 // hits farther along, which the loop does not keep (those on the page)
@@ -167,8 +177,9 @@ fn basic_idea() -> Figure {
                 let farther: Vec<f64> = world
                     .objects
                     .iter()
-                    .filter(|o| !std::ptr::eq(*o, object))
-                    .filter_map(|o| o.shape.intersect(&ray, Interval::FORWARD))
+                    .enumerate()
+                    .filter(|&(i, _)| i != object)
+                    .filter_map(|(_, o)| o.shape.intersect(&ray, Interval::FORWARD))
                     .map(|h| h.t)
                     .filter(|&t| {
                         let q = view.at(ray.at(t));
@@ -344,11 +355,12 @@ fn other_rays() -> Figure {
     let world = spheres();
     // a pixel that sees the floor where one light is blocked
     let ray = world.camera.pixel_ray(155, 115, world.width, world.height);
-    let (hit, object) = world
+    let scene = spheres_scene();
+    let (object, hit) = world
         .closest_hit(&ray, Interval::FORWARD)
         .expect("the pixel sees the floor");
     assert!(
-        matches!(object.shape, Shape::Plane(_)),
+        matches!(scene.objects[object].shape, ShapeSpec::Plane { .. }),
         "the pixel sees the floor"
     );
     let n = hit.normal;
@@ -432,16 +444,16 @@ fn other_rays() -> Figure {
                     Anchor::pointing(DVec2::new(side, 0.0)),
                 );
             }
-            Some((block, by)) => {
+            Some((by, block)) => {
                 blocked_lights += 1;
                 let at_block = at(block.point);
-                if let Shape::Sphere(s) = &by.shape {
+                if let ShapeSpec::Sphere { center, radius } = &scene.objects[by].shape {
                     // the blocker where the vertical plane cuts it
-                    let off = plane.off(s.center);
-                    let fill = colour(world.materials[by.material].kd);
+                    let off = plane.off(*center);
+                    let fill = colour(world.material_of(by).kd);
                     page.circle_alpha(
-                        at(s.center - off * plane.across),
-                        (s.radius * s.radius - off * off).sqrt(),
+                        at(*center - off * plane.across),
+                        (radius * radius - off * off).sqrt(),
                         Some(fill.with_alpha(0.35)),
                         Some(&Stroke::new(fill).width(2.0)),
                     );
@@ -458,7 +470,7 @@ fn other_rays() -> Figure {
                     "S = 0",
                     Anchor::pointing(DVec2::new(side, -1.0)),
                 );
-                let name = &world.materials[by.material].name;
+                let name = &world.material_of(by).name;
                 page.text_lines(
                     DVec2::new(at_block.x - 0.3, -0.5),
                     0.45,
@@ -578,7 +590,7 @@ material = "shiny"
 /// The highlight of one sphere as the Phong exponent p grows.
 fn exponent() -> Figure {
     let scene = raystep_scene::parse(SHINY, "shiny.toml").expect("the sweep's scene parses");
-    let world = World::from_scene(&scene, "shiny.toml").expect("the sweep's scene builds");
+    let world = crate::world(&scene, "shiny.toml").expect("the sweep's scene builds");
     let exponents = [2.0, 8.0, 32.0, 128.0, 512.0];
     let (w, h) = (world.width, world.height);
     let gap = 16.0;

@@ -9,6 +9,7 @@
 //! Student mode: with the feature `exercise` the modules marked below are
 //! replaced by the stubs in `exercise/`.
 
+mod brute_force;
 mod shading;
 mod sphere;
 mod trace;
@@ -26,12 +27,14 @@ mod local_shading;
 
 pub mod figures;
 
+pub use brute_force::BruteForce;
 pub use local_shading::shading_terms;
-pub use raystep_core::{Camera, DVec3, Hit, Interval, Ray};
+pub use raystep_core::{Aabb, Camera, DVec3, Hit, Interval, Ray, Shape};
 pub use raystep_render::{Image, RenderOptions};
 pub use raystep_scene::{Light, Material, Scene};
+pub use raystep_world::{Accelerator, Object, World, WorldError};
 pub use reflect::reflect;
 pub use shading::{LightSample, ShadingTerms};
 pub use sphere::Sphere;
 pub use trace::{Terms, render, render_with, shade, shade_hit, shade_with, trace};
-pub use world::{Object, Shape, World, WorldError};
+pub use world::{load, parse, shape, world};

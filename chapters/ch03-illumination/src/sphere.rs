@@ -1,4 +1,4 @@
-use raystep_core::DVec3;
+use raystep_core::{Aabb, DVec3, Hit, Interval, Ray, Shape};
 
 /// A sphere: the points at distance `radius` from `center`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -18,5 +18,18 @@ impl Sphere {
     /// The outward unit normal at a point on the sphere: (P − C) / r.
     pub fn normal_at(&self, point: DVec3) -> DVec3 {
         (point - self.center) / self.radius
+    }
+}
+
+/// A sphere as an object of a scene: its hit (exercise 1), and the cube
+/// around it.
+impl Shape for Sphere {
+    fn intersect(&self, ray: &Ray, interval: Interval) -> Option<Hit> {
+        Sphere::intersect(self, ray, interval)
+    }
+
+    fn bounds(&self) -> Aabb {
+        let r = DVec3::splat(self.radius);
+        Aabb::new(self.center - r, self.center + r)
     }
 }

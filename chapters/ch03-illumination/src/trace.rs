@@ -1,4 +1,4 @@
-use crate::{LightSample, Object, ShadingTerms, World, shading_terms};
+use crate::{LightSample, ShadingTerms, World, shading_terms};
 use raystep_core::{DVec3, Hit, Interval, Ray};
 use raystep_render::{Image, RenderError, RenderOptions};
 use raystep_scene::{Light, Material};
@@ -19,22 +19,23 @@ pub fn shade_with(
     ray: &Ray,
     visibility: impl Fn(&Hit, DVec3, &Light) -> f64,
 ) -> Option<ShadingTerms> {
-    // Step 1: the closest hit.
-    let (hit, object) = world.closest_hit(ray, Interval::FORWARD)?;
+    // Step 1: the closest hit, and which object it is on.
+    let (object, hit) = world.closest_hit(ray, Interval::FORWARD)?;
     Some(shade_hit(world, ray, &hit, object, visibility))
 }
 
 /// Steps 2–4 of [`shade_with`] for a hit already found: the local model's
-/// terms at `hit` on `object`, seen along `ray`. Chapters 05–06 call it
+/// terms at `hit` on object `object` (its index in `world.objects`), seen
+/// along `ray`. Chapters 05–06 call it
 /// at every bounce of a recursive ray.
 pub fn shade_hit(
     world: &World,
     ray: &Ray,
     hit: &Hit,
-    object: &Object,
+    object: usize,
     visibility: impl Fn(&Hit, DVec3, &Light) -> f64,
 ) -> ShadingTerms {
-    let material = &world.materials[object.material];
+    let material = world.material_of(object);
     // (A checkered material swaps its ka and kd on every other cube.)
     let patterned;
     let material = match material.checker {

@@ -8,7 +8,7 @@ use raystep_render::Progress;
 
 fn spheres(width: u32, height: u32) -> World {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/spheres.toml");
-    let mut world = World::load(&path).expect("the chapter's scene loads");
+    let mut world = ch03::load(&path).expect("the chapter's scene loads");
     // the same 16:9 framing, fewer pixels
     (world.width, world.height) = (width, height);
     world

@@ -10,7 +10,7 @@ use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette}
 use raystep_render::{Image, Progress, RenderOptions, srgb8};
 
 use crate::{
-    INT_SCALE, Interval, ORIGIN, Offset, Shape, TWO_LIGHTS_SCENE, Verdict, World, occluded,
+    INT_SCALE, Interval, ORIGIN, Offset, TWO_LIGHTS_SCENE, Verdict, World, occluded,
     offset_scale_aware, render, scaled_scene, shadow, shadow_errors, shadow_ray, verdict,
 };
 
@@ -49,8 +49,13 @@ fn vector(color: Color) -> Stroke {
 
 /// A world built from scene-file text.
 fn world_from(text: &str, name: &str) -> World {
+    ch03::parse(text, name).expect("the figure's scene builds")
+}
+
+/// The shapes of scene-file text, as the file gives them.
+fn shapes_of(text: &str, name: &str) -> Vec<raystep_scene::Shape> {
     let scene = raystep_scene::parse(text, name).expect("the figure's scene parses");
-    World::from_scene(&scene, name).expect("the figure's scene builds")
+    scene.objects.into_iter().map(|o| o.shape).collect()
 }
 
 /// A linear RGB colour as the figure colour it is stored as.
@@ -175,10 +180,11 @@ fn shadow_rays() -> Figure {
         normal,
     };
     let v2 = |p: DVec3| p.truncate();
-    let Shape::Sphere(ball) = &world.objects[0].shape else {
+    let raystep_scene::Shape::Sphere { center, radius } = shapes_of(SIDE_SCENE, "side.toml")[0]
+    else {
         panic!("the first object is the ball");
     };
-    let (centre, radius) = (v2(ball.center), ball.radius);
+    let (centre, radius) = (v2(center), radius);
 
     let mut page = Page::new(720.0, 440.0).view(DVec2::new(-4.6, -0.7), DVec2::new(4.9, 5.5));
     // the floor, seen edge-on
@@ -223,7 +229,7 @@ fn shadow_rays() -> Figure {
         let label = format!("S_{} = {s}", i + 1);
         if blocked {
             // where it is blocked: the closest blocker on the ray
-            let (blocker, _) = world
+            let (_, blocker) = world
                 .closest_hit(&ray, interval)
                 .expect("a blocked ray hits something");
             let at = v2(blocker.point);
@@ -473,6 +479,7 @@ fn two_lights() -> Figure {
     let image = render(&world, Offset::ScaleAware, &QUIET).expect("a small render");
     assert_eq!(world.lights.len(), 2, "two lights");
     let red = &world.objects[0];
+    let shapes = shapes_of(TWO_LIGHTS_SCENE, "two-lights.toml");
 
     // Sort the floor pixels by which lights reach them, keeping those the
     // big red sphere shadows (the blue one casts shadows of its own).
@@ -480,10 +487,10 @@ fn two_lights() -> Figure {
     for row in 0..h {
         for column in 0..w {
             let ray = world.camera.pixel_ray(column, row, w, h);
-            let Some((hit, object)) = world.closest_hit(&ray, Interval::FORWARD) else {
+            let Some((object, hit)) = world.closest_hit(&ray, Interval::FORWARD) else {
                 continue;
             };
-            if !matches!(object.shape, Shape::Plane(_)) {
+            if !matches!(shapes[object], raystep_scene::Shape::Plane { .. }) {
                 continue;
             }
             let normal = hit.normal * -hit.normal.dot(ray.direction).signum();

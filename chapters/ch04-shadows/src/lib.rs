@@ -20,12 +20,12 @@
 //! replaced by the stubs in `exercise/`.
 
 pub mod chart;
-mod errors;
 pub mod measure;
 mod occluded;
 mod offset;
 mod scale_aware;
 mod scenes;
+mod shadow_errors;
 mod trace;
 
 // Exercise 1: Sᵢ, the visibility of one light from a hit.
@@ -37,15 +37,15 @@ mod normal_offset;
 
 pub mod figures;
 
-pub use ch03::{Object, ShadingTerms, Shape, World};
-pub use errors::{ShadowErrors, Verdict, shadow_errors, verdict};
+pub use ch03::{Object, ShadingTerms, World};
 pub use normal_offset::normal_offset_ray;
 pub use occluded::occluded;
 pub use offset::{Offset, shadow_ray};
-pub use raystep_core::{Camera, DVec3, Hit, Interval, Ray};
+pub use raystep_core::{Camera, DVec3, Hit, Interval, Ray, Shape};
 pub use raystep_render::{Image, RenderError, RenderOptions};
 pub use raystep_scene::Light;
 pub use scale_aware::{FLOAT_SCALE, INT_SCALE, ORIGIN, offset_scale_aware};
 pub use scenes::{ACNE_SCENE, TWO_LIGHTS_SCENE, scaled, scaled_scene};
 pub use shadow::shadow;
+pub use shadow_errors::{ShadowErrors, Verdict, shadow_errors, verdict};
 pub use trace::{render, shade, trace};

@@ -5,16 +5,12 @@ use raystep_core::{Interval, Ray};
 // ANCHOR: occluded
 /// Does anything in `world` meet `ray` with `t` inside `interval`?
 ///
-/// Chapter 03's closest-hit loop, cut short: a shadow ray only asks
-/// whether the light is blocked, not by what, so the first blocker found
-/// answers it. Nothing is sorted, no closest t is kept, and in a scene
-/// where most shadow rays are blocked most of the loop is skipped.
+/// A shadow ray asks a weaker question than a primary ray: not "what is
+/// the closest hit?" but "is there any hit at all?". The world answers it
+/// with [`World::any_hit`]: chapter 03's brute-force loop, cut short at the
+/// first blocker (`ch03::BruteForce`), or whatever faster structure a later
+/// chapter puts behind the same question.
 pub fn occluded(world: &World, ray: &Ray, interval: Interval) -> bool {
-    for object in &world.objects {
-        if object.shape.intersect(ray, interval).is_some() {
-            return true; // one blocker is enough
-        }
-    }
-    false
+    world.any_hit(ray, interval)
 }
 // ANCHOR_END: occluded

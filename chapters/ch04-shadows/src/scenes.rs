@@ -52,5 +52,5 @@ pub fn scaled(scene: &Scene, scale: f64) -> Scene {
 pub fn scaled_scene(scale: f64) -> World {
     assert!(scale.is_finite() && scale > 0.0, "scale {scale}");
     let scene = raystep_scene::parse(ACNE_SCENE, "acne.toml").expect("acne.toml is valid");
-    World::from_scene(&scaled(&scene, scale), "acne.toml").expect("acne.toml has no polygons")
+    ch03::world(&scaled(&scene, scale), "acne.toml").expect("acne.toml has no polygons")
 }

@@ -1,5 +1,7 @@
 //! Exercise 2: the shadow ray lifted along the normal, next to the other
 //! two strategies.
+use std::sync::Arc;
+
 use ch04::{DVec3, Interval, Offset, Ray, Shape, normal_offset_ray, shadow_ray};
 use raystep_check::{Table, num, vec3};
 use raystep_scene::Shape as SceneShape;
@@ -37,7 +39,7 @@ impl Rng {
 }
 
 /// Chapter 03's shapes for these scene-file shapes.
-fn build(shapes: Vec<SceneShape>) -> Vec<Shape> {
+fn build(shapes: Vec<SceneShape>) -> Vec<Arc<dyn Shape>> {
     common::world(shapes)
         .objects
         .into_iter()
@@ -53,8 +55,8 @@ const GAP: f64 = 3e-4;
 /// it, and random hits on the surface seen from outside.
 struct Case {
     name: &'static str,
-    surface: Shape,
-    blocker: Shape,
+    surface: Arc<dyn Shape>,
+    blocker: Arc<dyn Shape>,
     /// A random ray from outside that hits the surface.
     primary: fn(&mut Rng, f64) -> Ray,
 }

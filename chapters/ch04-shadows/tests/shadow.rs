@@ -114,7 +114,7 @@ proptest! {
 fn two_lights(width: u32, height: u32) -> World {
     let mut scene = raystep_scene::parse(ch04::TWO_LIGHTS_SCENE, "two-lights.toml").unwrap();
     (scene.width, scene.height) = (width, height);
-    World::from_scene(&scene, "two-lights.toml").unwrap()
+    ch03::world(&scene, "two-lights.toml").unwrap()
 }
 
 fn options(threads: usize) -> RenderOptions {

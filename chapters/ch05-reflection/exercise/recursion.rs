@@ -1,39 +1,33 @@
 //! Exercise 2: the recursive tracer with both stopping rules.
-// You will need: crate::{local_light, reflect_direction},
-// ch04::offset_scale_aware, raystep_core::Interval.
-use crate::{Path, RayKind, RayLog, Stop};
-use ch03::World;
+// You will need: crate::reflect_direction, ch04::offset_scale_aware.
+use crate::{Path, Tracer};
 use raystep_core::{DVec3, Ray};
 
-// ANCHOR: trace
-/// The colour seen along `ray`, a ray at `path` in its pixel's tree:
-///
-/// L = [ka·Ia + Σᵢ Sᵢ·Iᵢ·(kd·(N·Lᵢ) + ks·(Rᵢ·V)^p)] + kr·Lr
-///
-/// where Lr is what the reflected ray sees, traced by this same function
-/// one level deeper, unless `stop` cuts it. Every ray traced or cut is
-/// noted in `log` with its kind (`kind` is this ray's).
-pub fn trace(
-    world: &World,
-    ray: &Ray,
-    kind: RayKind,
-    path: Path,
-    stop: &Stop,
-    log: &mut RayLog,
-) -> DVec3 {
-    // TODO:
-    // 1. world.closest_hit(ray, Interval::FORWARD). On a miss, note the ray
-    //    with log.traced(kind, path, ray, None) and return world.background;
-    //    on a hit note it with Some(hit.t).
-    // 2. colour = local_light(world, ray, &hit, object, path, log).
-    // 3. kr = the object's material's kr. If it is zero, return colour.
-    //    Otherwise the reflected ray starts at
-    //    offset_scale_aware(hit.point, normal) with normal = hit.facing(ray.direction),
-    //    in the direction reflect_direction(ray.direction, normal).
-    // 4. next = path.then(kr). If stop.cut(next) names a rule, note it with
-    //    log.cut(RayKind::Reflected, next, &reflected, cut) and Lr = 0;
-    //    otherwise add kr * trace(.., RayKind::Reflected, next, ..).
-    let _ = (world, ray, kind, path, stop, log);
-    todo!("ch05 exercise 2: trace")
+impl Tracer<'_> {
+    // ANCHOR: trace
+    /// The colour seen along `ray`, a ray at `path` in its pixel's tree:
+    ///
+    /// L = [ka·Ia + Σᵢ Sᵢ·Iᵢ·(kd·(N·Lᵢ) + ks·(Rᵢ·V)^p)] + kr·Lr
+    ///
+    /// where Lr is what the reflected ray sees, traced by this same method
+    /// one level deeper, unless the stopping rules cut it.
+    pub fn trace(&self, ray: &Ray, path: Path) -> DVec3 {
+        // TODO:
+        // 1. The closest hit: self.closest_hit(ray, path). A ray that hits
+        //    nothing sees self.world.background.
+        // 2. The local model with shadows:
+        //    colour = self.local_light(ray, &hit, object, path).
+        // 3. kr = self.world.material_of(object).kr. If it is zero, return
+        //    the colour. Otherwise the reflected ray starts off the surface
+        //    on the side the ray came from,
+        //    offset_scale_aware(hit.point, normal) with
+        //    normal = hit.facing(ray.direction), and goes
+        //    reflect_direction(ray.direction, normal).
+        // 4. Its path is next = path.then(kr). If self.allows(&reflected,
+        //    next) (not too deep, not worth too little), add
+        //    kr * self.trace(&reflected, next): the recursion.
+        let _ = (ray, path);
+        todo!("ch05 exercise 2: trace")
+    }
+    // ANCHOR_END: trace
 }
-// ANCHOR_END: trace

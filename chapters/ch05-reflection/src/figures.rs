@@ -10,8 +10,7 @@ use raystep_render::{Progress, RenderOptions};
 
 use crate::measure::{REFERENCE, chart_world, image_error};
 use crate::{
-    Cut, DEFAULT_STOP, Interval, LoggedRay, Ray, RayKind, Stop, World, pixel_tree,
-    reflect_direction, render,
+    Cut, DEFAULT_STOP, Interval, LoggedRay, Ray, Stop, World, pixel_tree, reflect_direction, render,
 };
 
 /// Every figure of this chapter, in the order the lecture shows them.
@@ -318,13 +317,13 @@ fn ray_tree() -> Figure {
             rays.iter().all(|r| !r.blocked),
             "no shadow ray of this pixel is blocked"
         );
-        for ray in rays.iter().filter(|r| r.kind == RayKind::Shadow) {
+        for ray in rays.iter().filter(|r| r.shadow) {
             let t = ray.t.expect("a shadow ray ends at its light");
             let blocker = ray.blocked.then(|| {
                 world
                     .closest_hit(&Ray::new(ray.origin, ray.direction), Interval::new(0.0, t))
                     .expect("a blocked shadow ray hits something")
-                    .0
+                    .1
                     .point
             });
             match blocker {
@@ -378,8 +377,8 @@ fn ray_tree() -> Figure {
 /// The traced rays of a pixel's tree under `stop` (not the shadow rays),
 /// each numbered by its depth where it ends, and the cut ray with an X.
 fn draw_rays(page: &mut Page, rays: &[LoggedRay], stop: &Stop, at: &dyn Fn(DVec3) -> DVec2) {
-    for ray in rays.iter().filter(|r| r.kind != RayKind::Shadow) {
-        let colour = if ray.kind == RayKind::Primary {
+    for ray in rays.iter().filter(|r| !r.shadow) {
+        let colour = if ray.is_primary() {
             RAY_COLOR
         } else {
             REFLECT_COLOR
@@ -445,18 +444,15 @@ fn draw_rays(page: &mut Page, rays: &[LoggedRay], stop: &Stop, at: &dyn Fn(DVec3
 
 /// A rule's ray counts for one pixel, as lines of text.
 fn summarise(rays: &[LoggedRay]) -> Vec<(String, Color)> {
-    let count = |kind: RayKind| {
-        rays.iter()
-            .filter(|r| r.kind == kind && r.cut.is_none())
-            .count()
-    };
+    let count =
+        |kind: fn(&LoggedRay) -> bool| rays.iter().filter(|r| kind(r) && r.cut.is_none()).count();
     let cut = rays.iter().find(|r| r.cut.is_some());
     let mut lines = vec![(
         format!(
             "{} primary + {} reflected rays, {} shadow rays",
-            count(RayKind::Primary),
-            count(RayKind::Reflected),
-            count(RayKind::Shadow)
+            count(LoggedRay::is_primary),
+            count(|r| !r.shadow && !r.is_primary()),
+            count(|r| r.shadow)
         ),
         palette::BLACK,
     )];
@@ -542,7 +538,7 @@ fn depths() -> Figure {
         let row_y = y - 22.0 * (i as f64 + 1.0);
         let cells = [
             depth.to_string(),
-            counts.reflected.to_string(),
+            counts.secondary.to_string(),
             fixed(error.rmse, 2),
             format!("{}", error.max),
         ];
@@ -558,7 +554,7 @@ fn depths() -> Figure {
     }
     page.label_sized(
         DVec2::new(x, y - 22.0 * (table.len() as f64 + 1.0)),
-        &format!("whole tree: {} reflected rays", whole.reflected),
+        &format!("whole tree: {} reflected rays", whole.secondary),
         Anchor::E,
         14.0,
         palette::BLACK,

@@ -8,19 +8,19 @@
 //!
 //! Recursion needs a rule to stop. The lecture gives two ([`Stop`]):
 //! a maximum depth, or a ray's *contribution*, the product of the k's
-//! along its path ([`Path::weight`]), falling below a threshold. The
-//! tracer counts the rays each rule spends ([`RayCounts`]) and can keep
-//! one pixel's whole ray tree for a figure ([`RayLog::recording`]).
+//! along its path ([`Path::weight`]), falling below a threshold. A
+//! [`Tracer`] carries one pixel's trace: it counts the rays each rule
+//! spends ([`RayCounts`]) and can keep the pixel's whole ray tree for a
+//! figure ([`Tracer::recording`]).
 //!
 //! Student mode: with the feature `exercise` the modules marked below are
 //! replaced by the stubs in `exercise/`.
 
 pub mod chart;
-mod local;
-mod log;
 pub mod measure;
-mod render;
+mod ray_tree;
 mod stop;
+mod trace;
 
 // Exercise 1: the reflected direction.
 #[cfg_attr(feature = "exercise", path = "../exercise/reflection.rs")]
@@ -31,12 +31,10 @@ mod recursion;
 
 pub mod figures;
 
-pub use ch03::{Object, Shape, World};
-pub use local::local_light;
-pub use log::{LoggedRay, RayCounts, RayKind, RayLog};
+pub use ch03::{Object, World};
+pub use ray_tree::{LoggedRay, RayCounts, RayLog};
 pub use raystep_core::{Camera, DVec3, Hit, Interval, Ray};
 pub use raystep_render::{Image, RenderError, RenderOptions};
-pub use recursion::trace;
 pub use reflection::reflect_direction;
-pub use render::{pixel_tree, render};
 pub use stop::{Cut, DEFAULT_STOP, Path, SAFETY_DEPTH, Stop};
+pub use trace::{Tracer, pixel_tree, ray_tree, render, trace_counted};

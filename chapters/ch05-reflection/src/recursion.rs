@@ -1,51 +1,42 @@
 //! Exercise 2: the recursive tracer with both stopping rules.
-use crate::{Path, RayKind, RayLog, Stop, local_light, reflect_direction};
-use ch03::World;
+use crate::{Path, Tracer, reflect_direction};
 use ch04::offset_scale_aware;
-use raystep_core::{DVec3, Interval, Ray};
+use raystep_core::{DVec3, Ray};
 
-// ANCHOR: trace
-/// The colour seen along `ray`, a ray at `path` in its pixel's tree:
-///
-/// L = [ka·Ia + Σᵢ Sᵢ·Iᵢ·(kd·(N·Lᵢ) + ks·(Rᵢ·V)^p)] + kr·Lr
-///
-/// where Lr is what the reflected ray sees, traced by this same function
-/// one level deeper, unless `stop` cuts it. Every ray traced or cut is
-/// noted in `log` with its kind (`kind` is this ray's).
-pub fn trace(
-    world: &World,
-    ray: &Ray,
-    kind: RayKind,
-    path: Path,
-    stop: &Stop,
-    log: &mut RayLog,
-) -> DVec3 {
-    // Step 1: the closest hit; a ray that hits nothing sees the background.
-    let Some((hit, object)) = world.closest_hit(ray, Interval::FORWARD) else {
-        log.traced(kind, path, ray, None);
-        return world.background;
-    };
-    log.traced(kind, path, ray, Some(hit.t));
-    // Step 2: the local model with shadows (chapters 03–04).
-    let mut colour = local_light(world, ray, &hit, object, path, log);
-    // Step 3: a mirror (kr > 0) adds kr·Lr. The reflected ray leaves from
-    // the side the ray came from, off the surface (chapter 04's offset).
-    let kr = world.materials[object.material].kr;
-    if kr == DVec3::ZERO {
-        return colour;
+impl Tracer<'_> {
+    // ANCHOR: trace
+    /// The colour seen along `ray`, a ray at `path` in its pixel's tree:
+    ///
+    /// L = [ka·Ia + Σᵢ Sᵢ·Iᵢ·(kd·(N·Lᵢ) + ks·(Rᵢ·V)^p)] + kr·Lr
+    ///
+    /// where Lr is what the reflected ray sees, traced by this same method
+    /// one level deeper, unless the stopping rules cut it.
+    pub fn trace(&self, ray: &Ray, path: Path) -> DVec3 {
+        // Step 1: the closest hit; a ray that hits nothing sees the background.
+        let Some((object, hit)) = self.closest_hit(ray, path) else {
+            return self.world.background;
+        };
+        // Step 2: the local model with shadows (chapters 03–04).
+        let mut colour = self.local_light(ray, &hit, object, path);
+        // Step 3: a mirror (kr > 0) adds kr·Lr. The reflected ray leaves
+        // from the side the ray came from, off the surface (chapter 04's
+        // offset).
+        let kr = self.world.material_of(object).kr;
+        if kr == DVec3::ZERO {
+            return colour;
+        }
+        let normal = hit.facing(ray.direction);
+        let reflected = Ray::new(
+            offset_scale_aware(hit.point, normal),
+            reflect_direction(ray.direction, normal),
+        );
+        // Step 4: the stopping rules: is the reflected ray too deep, or
+        // worth too little? Then Lr counts as 0.
+        let next = path.then(kr);
+        if self.allows(&reflected, next) {
+            colour += kr * self.trace(&reflected, next);
+        }
+        colour
     }
-    let normal = hit.facing(ray.direction);
-    let reflected = Ray::new(
-        offset_scale_aware(hit.point, normal),
-        reflect_direction(ray.direction, normal),
-    );
-    // Step 4: the stopping rules: is the reflected ray too deep, or worth
-    // too little? Then Lr counts as 0.
-    let next = path.then(kr);
-    match stop.cut(next) {
-        Some(cut) => log.cut(RayKind::Reflected, next, &reflected, cut),
-        None => colour += kr * trace(world, &reflected, RayKind::Reflected, next, stop, log),
-    }
-    colour
+    // ANCHOR_END: trace
 }
-// ANCHOR_END: trace

@@ -2,20 +2,13 @@
 //! that stop it (a maximum depth; a contribution below a threshold).
 use ch04::{Offset, offset_scale_aware};
 use ch05::{
-    Cut, DEFAULT_STOP, DVec3, Interval, LoggedRay, Path, Ray, RayCounts, RayKind, RayLog,
-    SAFETY_DEPTH, Stop, World, pixel_tree, render, trace,
+    Cut, DEFAULT_STOP, DVec3, Interval, LoggedRay, Ray, RayCounts, SAFETY_DEPTH, Stop, World,
+    pixel_tree, ray_tree, render, trace_counted,
 };
 use raystep_check::{Table, num, vec3};
 
 mod common;
 use common::{chapter_scene, quiet, world_from};
-
-/// The colour of the primary `ray` under `stop`, and the rays it took.
-fn trace_counted(world: &World, ray: &Ray, stop: &Stop) -> (DVec3, RayCounts) {
-    let mut log = RayLog::new();
-    let colour = trace(world, ray, RayKind::Primary, Path::PRIMARY, stop, &mut log);
-    (colour, log.counts)
-}
 
 /// Every pixel's primary ray of `world`, with its column and row.
 fn primary_rays(world: &World) -> impl Iterator<Item = (u32, u32, Ray)> + '_ {
@@ -93,12 +86,12 @@ fn depth_zero_is_the_chapter_04_colour() {
                 "pixel ({column}, {row}): depth 0 gives {colour}, chapter 04 {local}"
             );
             total += counts;
-            if let Some((_, object)) = world.closest_hit(&ray, Interval::FORWARD) {
-                on_mirrors += u64::from(world.materials[object.material].kr != DVec3::ZERO);
+            if let Some((object, _)) = world.closest_hit(&ray, Interval::FORWARD) {
+                on_mirrors += u64::from(world.material_of(object).kr != DVec3::ZERO);
             }
         }
         assert_eq!(total.primary, u64::from(world.width * world.height));
-        assert_eq!(total.reflected, 0);
+        assert_eq!(total.secondary, 0);
         assert_eq!(total.cut_by_depth, on_mirrors);
         assert!(on_mirrors > 0);
     }
@@ -116,8 +109,8 @@ fn depth_one_adds_kr_times_what_the_reflected_ray_sees() {
         let (colour, counts) = trace_counted(&world, &ray, &Stop::depth(1));
         let local = ch04::trace(&world, &ray, Offset::ScaleAware);
         let mut expected = local;
-        if let Some((hit, object)) = world.closest_hit(&ray, Interval::FORWARD) {
-            let kr = world.materials[object.material].kr;
+        if let Some((object, hit)) = world.closest_hit(&ray, Interval::FORWARD) {
+            let kr = world.material_of(object).kr;
             if kr != DVec3::ZERO {
                 let n = hit.facing(ray.direction);
                 let d = ray.direction;
@@ -126,7 +119,7 @@ fn depth_one_adds_kr_times_what_the_reflected_ray_sees() {
                 mirror_pixels += 1;
                 ball_in_mirror +=
                     usize::from(world.closest_hit(&reflected, Interval::FORWARD).is_some());
-                assert_eq!(counts.reflected, 1, "pixel ({column}, {row})");
+                assert_eq!(counts.secondary, 1, "pixel ({column}, {row})");
             }
         }
         assert!(
@@ -150,7 +143,7 @@ fn counts_row(table: &mut Table, rule: String, c: &RayCounts) {
     table.row(&[
         rule,
         c.primary.to_string(),
-        c.reflected.to_string(),
+        c.secondary.to_string(),
         c.shadow.to_string(),
         c.cut_by_depth.to_string(),
         c.cut_by_contribution.to_string(),
@@ -191,7 +184,7 @@ fn depth_rule_counts() {
             assert_eq!(c.cut_by_contribution, 0);
         }
         for pair in counts.windows(2) {
-            assert_eq!(pair[1].reflected, pair[0].reflected + pair[0].cut_by_depth);
+            assert_eq!(pair[1].secondary, pair[0].secondary + pair[0].cut_by_depth);
             assert!(pair[1].cut_by_depth <= pair[0].cut_by_depth);
         }
     }
@@ -227,7 +220,7 @@ fn contribution_rule_counts() {
                 assert_eq!(c.cut_by_depth, 0, "{name} {threshold}");
             }
             if let Some(p) = previous {
-                assert!(c.reflected >= p.reflected);
+                assert!(c.secondary >= p.secondary);
             }
             previous = Some(c);
         }
@@ -276,11 +269,10 @@ const BETWEEN: Ray = Ray::new(DVec3::ZERO, DVec3::X);
 fn assert_one_chain(c: &RayCounts, reflected: u64, cut_by_depth: u64, cut_by_contribution: u64) {
     let expected = RayCounts {
         primary: 1,
-        reflected,
+        secondary: reflected,
         shadow: reflected + 1,
         cut_by_depth,
         cut_by_contribution,
-        ..RayCounts::default()
     };
     assert_eq!(*c, expected);
 }
@@ -322,7 +314,7 @@ fn facing_mirrors_terminate() {
         let (_, c) = trace_counted(&tarnished, &BETWEEN, &Stop::contribution(threshold));
         // rays 1..n−1 are shot, ray n is cut
         assert_one_chain(&c, n - 1, 0, 1);
-        shot.push(c.reflected);
+        shot.push(c.secondary);
     }
     // ln(threshold)/ln(0.85) rounded up, less one
     assert_eq!(shot, [14, 28, 42, 56]);
@@ -347,20 +339,10 @@ fn contribution_cut_by_hand() {
     ];
     for (kr, threshold, reflected) in cases {
         let world = facing_mirrors(kr);
-        let mut log = RayLog::recording();
         let stop = Stop::contribution(threshold);
-        trace(
-            &world,
-            &BETWEEN,
-            RayKind::Primary,
-            Path::PRIMARY,
-            &stop,
-            &mut log,
-        );
-        assert_one_chain(&log.counts, reflected, 0, 1);
-        let cut: Vec<LoggedRay> = log
-            .rays
-            .unwrap()
+        let (_, counts) = trace_counted(&world, &BETWEEN, &stop);
+        assert_one_chain(&counts, reflected, 0, 1);
+        let cut: Vec<LoggedRay> = ray_tree(&world, &BETWEEN, &stop)
             .into_iter()
             .filter(|r| r.cut.is_some())
             .collect();
@@ -439,21 +421,27 @@ fn pixel_trees_of_the_mirror_ball() {
             let material = || {
                 world
                     .closest_hit(&Ray::new(r.origin, r.direction), Interval::FORWARD)
-                    .map_or("?".to_string(), |(_, o)| {
-                        world.materials[o.material].name.clone()
-                    })
+                    .map_or("?".to_string(), |(o, _)| world.material_of(o).name.clone())
             };
-            let ends = match (r.cut, r.kind, r.t) {
-                (Some(Cut::Depth), ..) => "cut: depth".to_string(),
-                (Some(Cut::Contribution), ..) => "cut: contribution".to_string(),
-                (None, RayKind::Shadow, _) if r.blocked => "blocked".to_string(),
-                (None, RayKind::Shadow, _) => "reaches the light".to_string(),
-                (None, _, Some(_)) => format!("hits {}", material()),
-                (None, _, None) => "background".to_string(),
+            let ends = match (r.cut, r.t) {
+                (Some(Cut::Depth), _) => "cut: depth".to_string(),
+                (Some(Cut::Contribution), _) => "cut: contribution".to_string(),
+                (None, _) if r.shadow && r.blocked => "blocked".to_string(),
+                (None, _) if r.shadow => "reaches the light".to_string(),
+                (None, Some(_)) => format!("hits {}", material()),
+                (None, None) => "background".to_string(),
+            };
+            // every secondary ray of this chapter is a reflected one
+            let kind = if r.shadow {
+                "Shadow"
+            } else if r.is_primary() {
+                "Primary"
+            } else {
+                "Reflected"
             };
             table.row(&[
                 i.to_string(),
-                format!("{:?}", r.kind),
+                kind.to_string(),
                 r.path.depth.to_string(),
                 vec3(r.path.weight),
                 vec3(r.origin),
@@ -571,18 +559,18 @@ fn reflected_rays_never_hit_their_own_surface() {
         let object_hit = |r: &LoggedRay| {
             world
                 .closest_hit(&Ray::new(r.origin, r.direction), Interval::FORWARD)
-                .map(|(hit, object)| (hit.t, object as *const _))
+                .map(|(object, hit)| (hit.t, object))
         };
         let (mut checked, mut self_hits, mut too_close) = (0, 0, 0);
         for (column, row, _) in primary_rays(&world) {
             let tree = pixel_tree(&world, column, row, &DEFAULT_STOP);
             let mut parent: Option<&LoggedRay> = None;
-            for r in tree.iter().filter(|r| r.kind != RayKind::Shadow) {
-                if r.kind == RayKind::Reflected && r.cut.is_none() {
+            for r in tree.iter().filter(|r| !r.shadow) {
+                if !r.is_primary() && r.cut.is_none() {
                     let (_, source) = object_hit(parent.unwrap()).expect("the parent hit a mirror");
                     checked += 1;
                     if let Some((t, object)) = object_hit(r) {
-                        self_hits += usize::from(std::ptr::eq(object, source));
+                        self_hits += usize::from(object == source);
                         too_close += usize::from(t < 1e-9);
                     }
                 }

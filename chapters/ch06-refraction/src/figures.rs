@@ -12,8 +12,8 @@ use raystep_render::{Image, Progress, RenderOptions};
 
 use crate::measure::MATERIALS_SCENE;
 use crate::{
-    CAMERA_MEDIUM, Camera, DEFAULT_STOP, Fresnel, Interval, Media, REFRACTIVE_INDICES, Ray, Shape,
-    World, critical_angle, refract, render,
+    CAMERA_MEDIUM, Camera, DEFAULT_STOP, Fresnel, Interval, Media, REFRACTIVE_INDICES, Ray, World,
+    critical_angle, refract, render,
 };
 
 /// Every figure of this chapter, in the order the lecture shows them.
@@ -68,8 +68,7 @@ fn degrees(radians: f64) -> String {
 
 /// A world built from scene-file text.
 fn world_from(text: &str, name: &str) -> World {
-    let scene = raystep_scene::parse(text, name).expect("the figure's scene parses");
-    World::from_scene(&scene, name).expect("the figure's scene builds")
+    ch03::parse(text, name).expect("the figure's scene builds")
 }
 
 /// The index of refraction of a material of the lecture's table.
@@ -583,12 +582,13 @@ fn materials() -> Figure {
         h,
         &image.to_srgb8(),
     );
-    for object in &world.objects {
-        let Shape::Sphere(ball) = &object.shape else {
+    let scene = raystep_scene::parse(MATERIALS_SCENE, "materials.toml").expect("it parses");
+    for object in &scene.objects {
+        let raystep_scene::Shape::Sphere { center, .. } = object.shape else {
             continue;
         };
         let material = &world.materials[object.material];
-        let at = project(&world.camera, ball.center, w, h);
+        let at = project(&world.camera, center, w, h);
         page.label_sized(
             DVec2::new(side + at.x, bottom - 2.0),
             &material.name,
@@ -649,14 +649,7 @@ fn bubble_views(world: &World) -> Vec<BubbleView> {
     let hit_of = |ray: &Ray| {
         world
             .closest_hit(ray, Interval::FORWARD)
-            .map(|(hit, object)| {
-                let k = world
-                    .objects
-                    .iter()
-                    .position(|o| std::ptr::eq(o, object))
-                    .expect("one of the world's objects");
-                (hit, k)
-            })
+            .map(|(object, hit)| (hit, object))
     };
     let mut views = Vec::with_capacity((w * h) as usize);
     for row in 0..h {

@@ -22,8 +22,7 @@ mod fresnel;
 mod ior;
 pub mod measure;
 mod media;
-mod render;
-mod tracer;
+mod trace;
 
 // Exercise 1: the refracted direction.
 #[cfg_attr(feature = "exercise", path = "../exercise/refraction.rs")]
@@ -34,16 +33,13 @@ mod schlick;
 
 pub mod figures;
 
-pub use ch03::{Object, Shape, World};
-pub use ch05::{
-    Cut, DEFAULT_STOP, LoggedRay, Path, RayCounts, RayKind, RayLog, SAFETY_DEPTH, Stop,
-};
+pub use ch03::{Object, World};
+pub use ch05::{Cut, DEFAULT_STOP, LoggedRay, Path, SAFETY_DEPTH, Stop};
 pub use fresnel::{Fresnel, fresnel};
 pub use ior::{REFRACTIVE_INDICES, critical_angle, index_of_refraction};
 pub use media::{Crossing, MAX_NESTING, Media};
 pub use raystep_core::{Camera, DVec3, Hit, Interval, Ray};
 pub use raystep_render::{Image, RenderError, RenderOptions};
 pub use refraction::refract;
-pub use render::{pixel_tree, render};
 pub use schlick::schlick;
-pub use tracer::{CAMERA_MEDIUM, split, trace};
+pub use trace::{CAMERA_MEDIUM, RayCounts, Tracer, pixel_tree, render, split};

@@ -44,6 +44,14 @@ pub const CALLS: u32 = 100_000;
 /// # Panics
 /// If the scene has no ball of that material.
 pub fn one_ball(material: &str) -> World {
+    ch03::world(&one_ball_scene(material), "materials.toml").expect("the chapter's scene builds")
+}
+
+/// The scene file of [`one_ball`].
+///
+/// # Panics
+/// If the scene has no ball of that material.
+pub fn one_ball_scene(material: &str) -> raystep_scene::Scene {
     let mut scene = raystep_scene::parse(MATERIALS_SCENE, "materials.toml")
         .expect("the chapter's scene parses");
     // the floor, the wall and the ball of `material`; no other ball
@@ -65,7 +73,7 @@ pub fn one_ball(material: &str) -> World {
     scene.camera.look_at = centre;
     scene.camera.look_from = centre + DVec3::new(0.0, 0.6, 4.0);
     (scene.width, scene.height) = CHART_SIZE;
-    World::from_scene(&scene, "materials.toml").expect("the chapter's scene builds")
+    scene
 }
 
 /// One material with one way of splitting kt.
@@ -213,7 +221,6 @@ pub fn from_csv(text: &str) -> Result<Vec<FresnelRow>, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Shape;
 
     #[test]
     fn csv_round_trip_and_errors() {
@@ -243,28 +250,31 @@ mod tests {
     #[test]
     fn one_ball_keeps_one_ball_of_the_material_in_the_middle() {
         for (material, ior) in REFRACTIVE_INDICES {
-            let world = one_ball(material);
-            let balls: Vec<_> = world
+            let (scene, world) = (one_ball_scene(material), one_ball(material));
+            let balls: Vec<_> = scene
                 .objects
                 .iter()
                 .filter_map(|o| match &o.shape {
-                    Shape::Sphere(s) => Some((s, &world.materials[o.material])),
+                    ShapeSpec::Sphere { center, .. } => {
+                        Some((center, &scene.materials[o.material]))
+                    }
                     _ => None,
                 })
                 .collect();
             assert_eq!(balls.len(), 1, "{material}: one ball");
-            let (ball, ball_material) = balls[0];
+            let (center, ball_material) = balls[0];
             assert_eq!(ball_material.name, material);
             assert_eq!(ball_material.ior, ior);
-            assert_eq!(ball.center.x, 0.0, "{material}: in the middle");
+            assert_eq!(center.x, 0.0, "{material}: in the middle");
             // the floor and the wall stay
             assert_eq!(world.objects.len(), 3, "{material}");
             // the middle pixel looks at the ball
             let ray = world.camera.pixel_ray(80, 45, 160, 90);
-            let (_, object) = world
+            let (object, _) = world
                 .closest_hit(&ray, crate::Interval::FORWARD)
                 .expect("the middle pixel hits");
-            assert!(matches!(object.shape, Shape::Sphere(_)), "{material}");
+            let shape = &scene.objects[object].shape;
+            assert!(matches!(shape, ShapeSpec::Sphere { .. }), "{material}");
         }
     }
 

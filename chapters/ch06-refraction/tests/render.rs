@@ -2,7 +2,7 @@
 //! These use both exercises (Snell's law everywhere, Schlick where asked).
 use ch06::{
     DEFAULT_STOP, DVec3, Fresnel, Image, LoggedRay, Media, Path as RayPath, Ray, RayCounts,
-    RayKind, RayLog, RenderOptions, Stop, World, pixel_tree, render, trace,
+    RenderOptions, Stop, Tracer, World, pixel_tree, render,
 };
 use raystep_check::{Tolerance, assert_image_matches};
 use raystep_render::Progress;
@@ -13,15 +13,14 @@ fn scene(file: &str, width: u32, height: u32) -> World {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("scenes")
         .join(file);
-    let mut world = World::load(&path).expect("the chapter's scene loads");
+    let mut world = ch03::load(&path).expect("the chapter's scene loads");
     (world.width, world.height) = (width, height);
     world
 }
 
 /// A world from scene-file text.
 fn world(toml: &str) -> World {
-    let scene = raystep_scene::parse(toml, "test.toml").expect("the test scene parses");
-    World::from_scene(&scene, "test.toml").expect("the test scene builds")
+    ch03::parse(toml, "test.toml").expect("the test scene builds")
 }
 
 fn quiet(threads: Option<usize>) -> RenderOptions {
@@ -122,18 +121,10 @@ fn sweep_the_rim(ior: f64) -> Tangent {
         let gap = 10f64.powf(-1.0 - 12.0 * f64::from(i) / 999.0);
         let b = 1.0 - gap;
         let ray = Ray::new(DVec3::new(b, 0.0, 5.0), DVec3::new(0.0, 0.0, -1.0));
-        let mut log = RayLog::recording();
-        trace(
-            &world,
-            &ray,
-            RayKind::Primary,
-            RayPath::PRIMARY,
-            &Media::new(1.0),
-            &stop,
-            Fresnel::Exact,
-            &mut log,
-        );
-        let rays = log.rays.unwrap();
+        let tracer = Tracer::recording(&world, stop, Fresnel::Exact);
+        tracer.trace(&ray, RayPath::PRIMARY, &Media::new(1.0));
+        let counts = tracer.counts();
+        let rays = tracer.ray_tree();
         if rays[0].t.is_none() {
             continue;
         }
@@ -143,7 +134,7 @@ fn sweep_the_rim(ior: f64) -> Tangent {
         let chord = 2.0 * (1.0 - (b / ior).powi(2)).sqrt();
         let inside = rays
             .iter()
-            .filter(|r| r.cut.is_none() && r.kind != RayKind::Shadow && r.origin.length() < 1.0);
+            .filter(|r| r.cut.is_none() && !r.shadow && r.origin.length() < 1.0);
         for ray in inside {
             let d = ray.direction.normalize();
             let t_mid = -ray.origin.dot(d);
@@ -158,7 +149,7 @@ fn sweep_the_rim(ior: f64) -> Tangent {
                 _ => out.wrong_exits += 1,
             }
         }
-        out.counts += log.counts;
+        out.counts += counts;
     }
     out
 }
@@ -352,7 +343,7 @@ fn no_energy_is_created() {
 
 fn check_weights(tree: &[LoggedRay], name: &str) {
     let mut per_depth = Vec::<DVec3>::new();
-    for ray in tree.iter().filter(|r| r.kind != RayKind::Shadow) {
+    for ray in tree.iter().filter(|r| !r.shadow) {
         let w = ray.path.weight;
         assert!(
             w.min_element() >= 0.0 && w.max_element() <= 1.0,

@@ -17,7 +17,6 @@
 mod agree;
 mod buffers;
 mod clip;
-mod mesh;
 mod project;
 mod raster;
 mod raycast;
@@ -38,16 +37,16 @@ pub mod measure;
 
 pub use agree::{Agreement, ON_EDGE, compare, edge_distance};
 pub use buffers::Buffers;
-pub use ch03::{Object, Shape, World};
+pub use ch03::{Object, World};
 pub use clip::{NEAR, clip_near};
 pub use coverage::{barycentric, covers};
 pub use depth_test::{DepthBuffer, perspective_depth};
-pub use mesh::{Mesh, MeshError};
 pub use project::Projection;
 pub use raster::{RasterCounts, rasterize};
 pub use raycast::raycast;
 pub use raystep_core::{Camera, DVec2, DVec3, Ray};
 pub use raystep_render::Image;
+pub use raystep_scene::{Mesh, MeshError};
 pub use scenes::{SHAPES, shapes};
 pub use shade::shade_pixel;
 pub use stage::{Stage, StageError, Triangle};

@@ -76,9 +76,11 @@ pub fn rasterize(stage: &Stage) -> (Buffers, RasterCounts) {
                     let i = row as usize * width as usize + column as usize;
                     buffers.id[i] = Some(triangle.object);
                     buffers.depth[i] = z;
-                    buffers
-                        .color
-                        .set(column, row, shade_pixel(world, &ray, t, triangle.object));
+                    buffers.color.set(
+                        column,
+                        row,
+                        shade_pixel(world, &ray, t, triangle.object, triangle.normal),
+                    );
                 }
             }
         }

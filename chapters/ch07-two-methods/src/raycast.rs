@@ -18,16 +18,18 @@ pub fn raycast(stage: &Stage) -> Buffers {
             // Step 1: shoot the ray through its centre.
             let ray = world.camera.pixel_ray(column, row, width, height);
             // Step 2: for each object, test it; keep the closest.
-            let Some((hit, index)) = world.closest_index(&ray, Interval::FORWARD) else {
+            let Some((index, hit)) = world.closest_hit(&ray, Interval::FORWARD) else {
                 continue;
             };
             // Step 3: shade; note the depth along the view direction.
             let i = row as usize * width as usize + column as usize;
             buffers.id[i] = Some(index);
             buffers.depth[i] = hit.t * ray.direction.dot(world.camera.forward);
-            buffers
-                .color
-                .set(column, row, shade_pixel(world, &ray, hit.t, index));
+            buffers.color.set(
+                column,
+                row,
+                shade_pixel(world, &ray, hit.t, index, hit.normal),
+            );
         }
     }
     buffers

@@ -2,7 +2,9 @@
 //! code.
 use raystep_core::DVec3;
 
-use crate::{Mesh, Stage};
+use raystep_scene::Mesh;
+
+use crate::Stage;
 
 /// `scenes/shapes.toml`.
 pub const SHAPES: &str = include_str!("../scenes/shapes.toml");

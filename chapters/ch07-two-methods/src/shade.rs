@@ -1,22 +1,17 @@
 //! Both methods shade a pixel the same way: chapter 03's local model,
 //! every light visible.
-use ch03::{Shape, World};
-use raystep_core::{Hit, Ray};
+use ch03::World;
+use raystep_core::{DVec3, Hit, Ray};
 use raystep_render::Rgb;
 
 // ANCHOR: shade_pixel
-/// The colour of object `object` of `world` where the pixel's ray `ray`
-/// meets it at distance `t`: chapter 03's local model with every light
+/// The colour of object `object` of `world`, whose unit normal there is
+/// `normal`, where the pixel's ray `ray` meets it at distance `t`:
+/// chapter 03's local model with every light
 /// visible (Sᵢ = 1). Rasterization alone knows nothing of other objects
 /// when it shades a pixel, so it has no shadow rays, and no reflected or
 /// refracted rays either; the ray caster is held to the same rule here.
-pub fn shade_pixel(world: &World, ray: &Ray, t: f64, object: usize) -> Rgb {
-    let object = &world.objects[object];
-    let normal = match &object.shape {
-        Shape::Polygon(p) => p.plane().normal,
-        Shape::Sphere(s) => (ray.at(t) - s.center).normalize(),
-        Shape::Plane(p) => p.normal,
-    };
+pub fn shade_pixel(world: &World, ray: &Ray, t: f64, object: usize, normal: DVec3) -> Rgb {
     let hit = Hit {
         t,
         point: ray.at(t),

@@ -1,12 +1,12 @@
 //! The scene both methods draw: chapter 03's world, whose objects are all
 //! polygons, and those polygons as triangles for the rasterizer.
-use ch02::Polygon;
-use ch03::{Object, Shape, World};
-use raystep_core::DVec3;
-use raystep_scene::Scene;
-use thiserror::Error;
+use std::sync::Arc;
 
-use crate::Mesh;
+use ch02::Polygon;
+use ch03::{Object, World};
+use raystep_core::DVec3;
+use raystep_scene::{Mesh, Scene, Shape as ShapeSpec};
+use thiserror::Error;
 
 /// One triangle of the stage and the object it belongs to.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -15,6 +15,9 @@ pub struct Triangle {
     pub corners: [DVec3; 3],
     /// The index of its object in the world (the id both methods write).
     pub object: usize,
+    /// Its object's unit normal (the polygon's plane normal, as the ray
+    /// caster's hit has it).
+    pub normal: DVec3,
 }
 
 /// Why a world cannot be rasterized.
@@ -38,7 +41,7 @@ pub enum StageError {
 }
 
 /// The world and its triangles.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct Stage {
     /// Chapter 03's world: camera, lights, materials, and the polygons the
     /// ray caster intersects.
@@ -49,38 +52,31 @@ pub struct Stage {
 }
 
 impl Stage {
-    /// The stage of a world whose objects are all polygons; `file` names
+    /// The stage of a scene whose objects are all polygons; `file` names
     /// the scene in errors.
-    pub fn new(world: World, file: &str) -> Result<Stage, StageError> {
+    pub fn from_scene(scene: &Scene, file: &str) -> Result<Stage, StageError> {
+        let world = ch03::world(scene, file)?;
         let mut triangles = Vec::new();
-        for (index, object) in world.objects.iter().enumerate() {
-            let polygon = match &object.shape {
-                Shape::Polygon(p) => p,
-                Shape::Sphere(_) | Shape::Plane(_) => {
-                    return Err(StageError::NotAPolygon {
-                        file: file.to_string(),
-                        index,
-                        kind: match object.shape {
-                            Shape::Sphere(_) => "sphere",
-                            _ => "plane",
-                        },
-                    });
-                }
+        for (index, object) in scene.objects.iter().enumerate() {
+            let ShapeSpec::Polygon { vertices } = &object.shape else {
+                return Err(StageError::NotAPolygon {
+                    file: file.to_string(),
+                    index,
+                    kind: object.shape.kind(),
+                });
             };
-            let v = polygon.vertices();
+            // the same polygon the world holds (it was built without error)
+            let normal = Polygon::new(vertices.clone()).map_or(DVec3::ZERO, |p| p.plane().normal);
+            let v = vertices;
             for k in 1..v.len() - 1 {
                 triangles.push(Triangle {
                     corners: [v[0], v[k], v[k + 1]],
                     object: index,
+                    normal,
                 });
             }
         }
         Ok(Stage { world, triangles })
-    }
-
-    /// The stage of a scene file's text.
-    pub fn from_scene(scene: &Scene, file: &str) -> Result<Stage, StageError> {
-        Stage::new(World::from_scene(scene, file)?, file)
     }
 
     /// Adds every triangle of `mesh` as an object of material `material`
@@ -95,9 +91,10 @@ impl Stage {
                     self.triangles.push(Triangle {
                         corners,
                         object: self.world.objects.len(),
+                        normal: polygon.plane().normal,
                     });
                     self.world.objects.push(Object {
-                        shape: Shape::Polygon(polygon),
+                        shape: Arc::new(polygon),
                         material,
                     });
                 }

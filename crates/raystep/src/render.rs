@@ -29,19 +29,19 @@ const DEFAULT_RENDERER: &str = "ch06";
 
 /// Chapter 03: the local model, every light visible.
 fn render_ch03(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
-    let world = ch03::World::from_scene(scene, file).map_err(|e| e.to_string())?;
+    let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
     ch03::render(&world, ch03::Terms::All, options).map_err(|e| e.to_string())
 }
 
 /// Chapter 04: shadow rays, with the scale-aware offset against acne.
 fn render_ch04(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
-    let world = ch03::World::from_scene(scene, file).map_err(|e| e.to_string())?;
+    let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
     ch04::render(&world, ch04::Offset::ScaleAware, options).map_err(|e| e.to_string())
 }
 
 /// Chapter 05: recursive reflected rays, stopped by contribution.
 fn render_ch05(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
-    let world = ch03::World::from_scene(scene, file).map_err(|e| e.to_string())?;
+    let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
     let (image, _) =
         ch05::render(&world, &ch05::DEFAULT_STOP, options).map_err(|e| e.to_string())?;
     Ok(image)
@@ -50,7 +50,7 @@ fn render_ch05(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Ima
 /// Chapter 06: reflection and refraction, split by the exact Fresnel
 /// equations.
 fn render_ch06(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
-    let world = ch03::World::from_scene(scene, file).map_err(|e| e.to_string())?;
+    let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
     let (image, _) = ch06::render(&world, &ch05::DEFAULT_STOP, ch06::Fresnel::Exact, options)
         .map_err(|e| e.to_string())?;
     Ok(image)

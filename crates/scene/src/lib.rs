@@ -8,6 +8,9 @@
 //! geometry: the chapters build their own spheres, planes and polygons from
 //! it.
 //!
+//! Triangle meshes ([`Mesh`]) come from OBJ files ([`Mesh::load_obj`]) or
+//! are made in code ([`Mesh::icosphere`]).
+//!
 //! # The format
 //!
 //! A scene states only what it uses. Only `[camera]` with `look_from` and
@@ -54,6 +57,7 @@
 #![deny(missing_docs)]
 
 mod error;
+mod mesh;
 mod raw;
 
 use std::ops::Range;
@@ -66,6 +70,7 @@ use toml::de::DeTable;
 
 use error::Context;
 pub use error::SceneError;
+pub use mesh::{Mesh, MeshError};
 use raw::{RawMaterial, RawObject, RawScene, Table};
 
 /// The largest image width or height a scene may ask for, in pixels.
@@ -290,6 +295,17 @@ pub enum Shape {
         /// Its corners in order around its edge, at least 3.
         vertices: Vec<DVec3>,
     },
+}
+
+impl Shape {
+    /// The shape's key in the file: `sphere`, `plane` or `polygon`.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Shape::Sphere { .. } => "sphere",
+            Shape::Plane { .. } => "plane",
+            Shape::Polygon { .. } => "polygon",
+        }
+    }
 }
 
 /// Reads and checks the scene file at `path`. Errors name the file as

@@ -18,5 +18,5 @@ pub fn world(shapes: Vec<Shape>) -> World {
             line: 1,
         })
         .collect();
-    World::from_scene(&scene, "test").expect("spheres and planes build")
+    ch03::world(&scene, "test").expect("spheres and planes build")
 }

@@ -8,7 +8,7 @@ use std::path::Path;
 pub fn world_from(text: &str, name: &str, width: u32, height: u32) -> World {
     let mut scene = raystep_scene::parse(text, name).expect("the test scene parses");
     (scene.width, scene.height) = (width, height);
-    World::from_scene(&scene, name).expect("the test scene builds")
+    ch03::world(&scene, name).expect("the test scene builds")
 }
 
 /// The chapter's scene `scenes/<name>.toml` at `width × height`.

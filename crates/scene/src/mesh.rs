@@ -1,5 +1,6 @@
-//! Triangle meshes: the only primitive a rasterizer draws. Spheres become
-//! subdivided icosahedra; the Stanford bunny comes from an OBJ file.
+//! Triangle meshes: what a rasterizer draws, and (from chapter 08 on) what
+//! a ray tracer speeds up. Spheres become subdivided icosahedra; the
+//! Stanford bunny comes from an OBJ file.
 use std::collections::HashMap;
 use std::path::Path;
 

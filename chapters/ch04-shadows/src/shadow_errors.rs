@@ -62,7 +62,7 @@ pub enum Verdict {
 /// polygon could not be skipped so lightly in a mesh, where its neighbours
 /// are the same surface.)
 pub fn verdict(world: &World, ray: &Ray, light: DVec3, offset: Offset) -> Verdict {
-    let Some((hit, object)) = world.closest_hit(ray, Interval::FORWARD) else {
+    let Some((object, hit)) = world.closest_hit(ray, Interval::FORWARD) else {
         return Verdict::Unjudged;
     };
     // N facing the viewer, as the shader uses it
@@ -76,14 +76,7 @@ pub fn verdict(world: &World, ray: &Ray, light: DVec3, offset: Offset) -> Verdic
         return Verdict::Unjudged; // behind the surface: in shadow either way
     }
     // the truth: every object but this one, from the point itself
-    let truth_ray = Ray::new(hit.point, to_light);
-    let truth_blocked = world.objects.iter().any(|other| {
-        !std::ptr::eq(other, object)
-            && other
-                .shape
-                .intersect(&truth_ray, Interval::new(0.0, 1.0))
-                .is_some()
-    });
+    let truth_blocked = blocked_by_another(world, &Ray::new(hit.point, to_light), object);
     // the strategy: every object, from where it starts the ray
     let (strategy_ray, interval) = shadow_ray(hit.point, normal, light, offset);
     match (
@@ -94,6 +87,21 @@ pub fn verdict(world: &World, ray: &Ray, light: DVec3, offset: Offset) -> Verdic
         (true, false) => Verdict::Leak,
         _ => Verdict::Right,
     }
+}
+
+/// Does an object other than `own` meet `ray` for t in [0, 1]? The closest
+/// hits in turn: each one on `own` (its surface a rounding error away from
+/// the ray's start) is stepped past, and the first hit on another object
+/// answers.
+fn blocked_by_another(world: &World, ray: &Ray, own: usize) -> bool {
+    let mut interval = Interval::new(0.0, 1.0);
+    while let Some((object, hit)) = world.closest_hit(ray, interval) {
+        if object != own {
+            return true;
+        }
+        interval.min = hit.t.next_up();
+    }
+    false
 }
 
 /// The [`verdict`] of `offset` at every pixel–light pair of `world`, one

@@ -1,0 +1,250 @@
+//! The seam between the objects and the tracers: a second collection, the
+//! brute-force list behind a bounding-box test, must give every tracer of
+//! chapters 03–07 exactly what the plain list gives it, on every chapter
+//! scene, without a line of those tracers changed. Chapters 08–10 hand the
+//! same tracers their BVH, grid and kd-tree the same way.
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use raystep_core::{Aabb, DVec3, Hit, Interval, Ray};
+use raystep_render::{Image, Progress, RenderOptions};
+use raystep_world::{Accelerator, Object, World};
+
+/// The brute-force loop with a box test in front of every object: an
+/// object whose bounds the ray misses within the interval is not asked.
+/// It counts the questions it is asked and the objects it skips, so the
+/// test can tell that every ray of a tracer went through it.
+#[derive(Debug)]
+struct BoxedList {
+    boxes: Vec<Aabb>,
+    skipped: AtomicU64,
+    closest_asked: AtomicU64,
+    any_asked: AtomicU64,
+}
+
+impl BoxedList {
+    fn new(objects: &[Object]) -> BoxedList {
+        BoxedList {
+            boxes: objects.iter().map(|o| o.shape.bounds()).collect(),
+            skipped: AtomicU64::new(0),
+            closest_asked: AtomicU64::new(0),
+            any_asked: AtomicU64::new(0),
+        }
+    }
+
+    /// (closest-hit questions, any-hit questions) since the last call.
+    fn asked(&self) -> (u64, u64) {
+        (
+            self.closest_asked.swap(0, Ordering::Relaxed),
+            self.any_asked.swap(0, Ordering::Relaxed),
+        )
+    }
+
+    fn misses(&self, index: usize, ray: &Ray, interval: Interval) -> bool {
+        let miss = self.boxes[index].hit(ray, interval).is_none();
+        if miss {
+            self.skipped.fetch_add(1, Ordering::Relaxed);
+        }
+        miss
+    }
+}
+
+impl Accelerator for BoxedList {
+    fn closest_hit(
+        &self,
+        objects: &[Object],
+        ray: &Ray,
+        interval: Interval,
+    ) -> Option<(usize, Hit)> {
+        self.closest_asked.fetch_add(1, Ordering::Relaxed);
+        let mut closest = None;
+        let mut interval = interval;
+        for (index, object) in objects.iter().enumerate() {
+            if self.misses(index, ray, interval) {
+                continue;
+            }
+            if let Some(hit) = object.shape.intersect(ray, interval) {
+                interval = interval.with_max(hit.t);
+                closest = Some((index, hit));
+            }
+        }
+        closest
+    }
+
+    fn any_hit(&self, objects: &[Object], ray: &Ray, interval: Interval) -> bool {
+        self.any_asked.fetch_add(1, Ordering::Relaxed);
+        (0..objects.len()).any(|index| {
+            !self.misses(index, ray, interval)
+                && objects[index].shape.intersect(ray, interval).is_some()
+        })
+    }
+}
+
+fn workspace() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// Every `chapters/*/scenes/*.toml`, in order.
+fn chapter_scenes() -> Vec<PathBuf> {
+    let mut scenes = Vec::new();
+    for chapter in std::fs::read_dir(workspace().join("chapters")).unwrap() {
+        let dir = chapter.unwrap().path().join("scenes");
+        for file in std::fs::read_dir(&dir).into_iter().flatten() {
+            let file = file.unwrap().path();
+            if file.extension().is_some_and(|e| e == "toml") {
+                scenes.push(file);
+            }
+        }
+    }
+    scenes.sort();
+    scenes
+}
+
+/// The world of `path` at a test size, with the plain list, and the same
+/// world with the boxed list.
+fn worlds(path: &Path) -> (World, World, Arc<BoxedList>) {
+    let mut scene = raystep_scene::load(path).unwrap();
+    // a test size in the scene's own proportion
+    let aspect = f64::from(scene.width) / f64::from(scene.height);
+    (scene.width, scene.height) = (64, (64.0 / aspect).round() as u32);
+    let list = ch03::world(&scene, &path.display().to_string()).unwrap();
+    let boxed = Arc::new(BoxedList::new(&list.objects));
+    let other = list.clone().with_accelerator(boxed.clone());
+    (list, other, boxed)
+}
+
+const QUIET: RenderOptions = RenderOptions {
+    threads: Some(2),
+    progress: Progress::Never,
+};
+
+/// Every tracer of chapters 03–06, as the command line runs it, and the
+/// counts it keeps (rays, wrong shadows) as text.
+fn every_tracer(world: &World) -> Vec<(&'static str, Image, String)> {
+    let (ch05_image, ch05_counts) = ch05::render(world, &ch05::DEFAULT_STOP, &QUIET).unwrap();
+    let (ch06_image, ch06_counts) =
+        ch06::render(world, &ch05::DEFAULT_STOP, ch06::Fresnel::Exact, &QUIET).unwrap();
+    vec![
+        (
+            "ch03",
+            ch03::render(world, ch03::Terms::All, &QUIET).unwrap(),
+            String::new(),
+        ),
+        (
+            "ch04",
+            ch04::render(world, ch04::Offset::ScaleAware, &QUIET).unwrap(),
+            format!("{:?}", ch04::shadow_errors(world, ch04::Offset::TMin(0.0))),
+        ),
+        ("ch05", ch05_image, format!("{ch05_counts:?}")),
+        ("ch06", ch06_image, format!("{ch06_counts:?}")),
+    ]
+}
+
+#[test]
+fn every_tracer_gives_the_same_bytes_on_a_second_collection() {
+    let scenes = chapter_scenes();
+    assert!(scenes.len() >= 8, "{scenes:?}");
+    let mut compared = 0;
+    for path in &scenes {
+        let (list, boxed_world, boxed) = worlds(path);
+        let expected = every_tracer(&list);
+        let before = boxed.skipped.load(Ordering::Relaxed);
+        let actual = every_tracer(&boxed_world);
+        for ((name, a, a_counts), (_, b, b_counts)) in expected.iter().zip(&actual) {
+            assert_eq!(
+                a.to_srgb8(),
+                b.to_srgb8(),
+                "{name} on {}: the images differ",
+                path.display()
+            );
+            assert_eq!(a_counts, b_counts, "{name} on {}", path.display());
+            compared += 1;
+        }
+        // the tracers really asked the boxed list (it skipped objects)
+        assert!(
+            boxed.skipped.load(Ordering::Relaxed) > before,
+            "{}: the boxed list was never asked",
+            path.display()
+        );
+        every_ray_goes_through_the_seam(&boxed_world, &boxed, path);
+    }
+    assert_eq!(compared, 4 * scenes.len());
+}
+
+/// Each ray a tracer counts is one question to the collection: a primary
+/// or secondary ray one closest-hit question, a shadow ray one any-hit
+/// question. A tracer that kept a loop of its own would ask fewer.
+fn every_ray_goes_through_the_seam(world: &World, boxed: &BoxedList, path: &Path) {
+    let pixels = u64::from(world.width * world.height);
+    let _ = boxed.asked();
+    ch03::render(world, ch03::Terms::All, &QUIET).unwrap();
+    assert_eq!(boxed.asked(), (pixels, 0), "ch03 on {}", path.display());
+    ch04::render(world, ch04::Offset::ScaleAware, &QUIET).unwrap();
+    let (closest, any) = boxed.asked();
+    assert_eq!(closest, pixels, "ch04 on {}", path.display());
+    assert!(any > 0, "ch04 on {}: no shadow ray asked", path.display());
+    let (_, c) = ch05::render(world, &ch05::DEFAULT_STOP, &QUIET).unwrap();
+    let asked = boxed.asked();
+    assert_eq!(
+        asked,
+        (c.primary + c.secondary, c.shadow),
+        "ch05 on {}",
+        path.display()
+    );
+    let (_, c) = ch06::render(world, &ch05::DEFAULT_STOP, ch06::Fresnel::Exact, &QUIET).unwrap();
+    let asked = boxed.asked();
+    let traced = c.primary + c.reflected + c.transmitted;
+    assert_eq!(asked, (traced, c.shadow), "ch06 on {}", path.display());
+}
+
+#[test]
+fn the_ray_caster_of_chapter_07_gives_the_same_buffers() {
+    let path = workspace().join("chapters/ch07-two-methods/scenes/shapes.toml");
+    let mut scene = raystep_scene::load(&path).unwrap();
+    (scene.width, scene.height) = (64, 36);
+    let mut stage = ch07::Stage::from_scene(&scene, "shapes.toml").unwrap();
+    let expected = ch07::raycast(&stage);
+    let boxed = Arc::new(BoxedList::new(&stage.world.objects));
+    stage.world = stage.world.with_accelerator(boxed.clone());
+    let actual = ch07::raycast(&stage);
+    assert_eq!(expected, actual);
+    assert!(boxed.skipped.load(Ordering::Relaxed) > 0);
+}
+
+/// Seeded rays from inside and around every chapter scene: the two
+/// collections agree on the closest hit (object and t, to the bit) and on
+/// any hit. Disagreements are counted, and there must be none.
+#[test]
+fn closest_and_any_hit_agree_on_seeded_rays() {
+    let mut seed: u64 = 0x5EED;
+    let mut next = move || {
+        seed = seed
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    let (mut rays, mut disagreements) = (0, 0);
+    for path in chapter_scenes() {
+        let (list, boxed, _) = worlds(&path);
+        for _ in 0..2000 {
+            let origin = DVec3::new(next(), next(), next()) * 8.0;
+            let direction = DVec3::new(next(), next(), next());
+            let ray = Ray::new(origin, direction);
+            let interval = Interval::new(0.0, 4.0 + 8.0 * next().abs());
+            let (a, b) = (
+                list.closest_hit(&ray, interval),
+                boxed.closest_hit(&ray, interval),
+            );
+            let same_closest = match (a, b) {
+                (None, None) => true,
+                (Some((i, h)), Some((j, k))) => i == j && h.t.to_bits() == k.t.to_bits(),
+                _ => false,
+            };
+            let same_any = list.any_hit(&ray, interval) == boxed.any_hit(&ray, interval);
+            disagreements += usize::from(!same_closest) + usize::from(!same_any);
+            rays += 1;
+        }
+    }
+    assert_eq!(disagreements, 0, "of {rays} rays");
+}
