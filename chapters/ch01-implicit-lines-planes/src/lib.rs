@@ -24,8 +24,6 @@ mod line_through_points;
 #[cfg_attr(feature = "exercise", path = "../exercise/plane_through_points.rs")]
 mod plane_through_points;
 
-pub mod figures;
-
 pub use degenerate::Degenerate;
 pub use line::Line2;
 pub use line_through_points::rotate90;

@@ -24,8 +24,6 @@ mod ray_plane;
 #[cfg_attr(feature = "exercise", path = "../exercise/inside_polygon.rs")]
 mod inside_polygon;
 
-pub mod figures;
-
 pub use ch01::{Degenerate, Line2, Plane};
 pub use crossing::inside_crossing;
 pub use fill_rule::owns_boundary;

@@ -25,8 +25,6 @@ mod reflect;
 #[cfg_attr(feature = "exercise", path = "../exercise/local_shading.rs")]
 mod local_shading;
 
-pub mod figures;
-
 pub use brute_force::BruteForce;
 pub use local_shading::shading_terms;
 pub use raystep_core::{Aabb, Camera, DVec3, Hit, Interval, Ray, Shape};

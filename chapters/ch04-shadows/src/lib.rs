@@ -19,8 +19,6 @@
 //! Student mode: with the feature `exercise` the modules marked below are
 //! replaced by the stubs in `exercise/`.
 
-pub mod chart;
-pub mod measure;
 mod occluded;
 mod offset;
 mod scale_aware;
@@ -34,8 +32,6 @@ mod shadow;
 // Exercise 2: the shadow ray that starts a little off the surface.
 #[cfg_attr(feature = "exercise", path = "../exercise/normal_offset.rs")]
 mod normal_offset;
-
-pub mod figures;
 
 pub use ch03::{Object, ShadingTerms, World};
 pub use normal_offset::normal_offset_ray;

@@ -16,8 +16,6 @@
 //! Student mode: with the feature `exercise` the modules marked below are
 //! replaced by the stubs in `exercise/`.
 
-pub mod chart;
-pub mod measure;
 mod ray_tree;
 mod stop;
 mod trace;
@@ -28,8 +26,6 @@ mod reflection;
 // Exercise 2: the recursion with both stopping rules.
 #[cfg_attr(feature = "exercise", path = "../exercise/recursion.rs")]
 mod recursion;
-
-pub mod figures;
 
 pub use ch03::{Object, World};
 pub use ray_tree::{LoggedRay, RayCounts, RayLog};

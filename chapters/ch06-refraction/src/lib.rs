@@ -17,10 +17,8 @@
 //! Student mode: with the feature `exercise` the modules marked below are
 //! replaced by the stubs in `exercise/`.
 
-pub mod chart;
 mod fresnel;
 mod ior;
-pub mod measure;
 mod media;
 mod trace;
 
@@ -30,8 +28,6 @@ mod refraction;
 // Exercise 2: Schlick's approximation.
 #[cfg_attr(feature = "exercise", path = "../exercise/schlick.rs")]
 mod schlick;
-
-pub mod figures;
 
 pub use ch03::{Object, World};
 pub use ch05::{Cut, DEFAULT_STOP, LoggedRay, Path, SAFETY_DEPTH, Stop};

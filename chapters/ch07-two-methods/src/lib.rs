@@ -31,10 +31,6 @@ mod coverage;
 #[cfg_attr(feature = "exercise", path = "../exercise/depth_test.rs")]
 mod depth_test;
 
-pub mod chart;
-pub mod figures;
-pub mod measure;
-
 pub use agree::{Agreement, ON_EDGE, compare, edge_distance};
 pub use buffers::Buffers;
 pub use ch03::{Object, World};

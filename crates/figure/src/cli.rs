@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use crate::Figure;
+use crate::Chapter;
 use crate::output::{Format, check_all, write_all};
 
 /// What the command line asked for.
@@ -45,15 +45,16 @@ fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Option<Args>, St
     Ok(Some(Args { out, format, check }))
 }
 
-/// The whole `main` of a chapter's diagram binary.
+/// The whole `main` of a chapter's diagram binary: draws `chapter`'s
+/// figures (and charts).
 ///
 /// Usage: `<bin> --out DIR [--format svg|png|both] [--check]` (format defaults to both).
 /// Writes the figures of `figures()` into DIR and prints one line per file written. With
 /// `--check` it writes nothing and prints one line per file that differs, is missing or is
 /// extra, failing if there is any. On an error it prints one line to stderr and fails; bad
 /// arguments print a one-line usage error and exit with status 2.
-pub fn diagram_main(chapter: &str, figures: fn() -> Vec<Figure>) -> ExitCode {
-    let program = format!("{chapter}-figures");
+pub fn diagram_main(chapter: &Chapter) -> ExitCode {
+    let (program, chapter, figures) = (format!("{}-figures", chapter.id), chapter.id, chapter);
     let usage = format!("usage: {program} --out DIR [--format svg|png|both] [--check]");
     let args = match parse_args(std::env::args().skip(1)) {
         Ok(Some(args)) => args,
@@ -67,7 +68,7 @@ pub fn diagram_main(chapter: &str, figures: fn() -> Vec<Figure>) -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let figures = figures();
+    let figures = figures.all_figures();
     if args.check {
         return match check_all(&figures, &args.out, args.format) {
             Ok(mismatches) if mismatches.is_empty() => ExitCode::SUCCESS,

@@ -26,6 +26,7 @@
 //! assert!(rendered.png.starts_with(b"\x89PNG"));
 //! ```
 
+mod chapter;
 mod chart;
 mod cli;
 mod error;
@@ -36,9 +37,11 @@ pub mod numbers;
 mod output;
 mod page;
 mod projection;
+mod side_view;
 mod style;
 mod text;
 
+pub use chapter::{Chapter, Measurement, Renderer, book_figures, measured};
 pub use chart::{ChartArea, ChartError, chart};
 /// plotters, re-exported so chapters draw charts with the kit's version.
 pub use plotters;
@@ -49,6 +52,7 @@ pub use error::FigureError;
 pub use output::{Format, Mismatch, Rendered, check_all, render, write_all};
 pub use page::{Anchor, Page, clip_line};
 pub use projection::Projection;
+pub use side_view::{SideView, camera_pixel};
 pub use style::{Color, Fill, Stroke, palette};
 
 /// The licence of the DejaVu fonts (Bitstream Vera licence, DejaVu changes public domain),

@@ -42,15 +42,71 @@ pub fn scientific(x: f64, markup: bool) -> String {
     if markup {
         format!("{m}×10^{{{e}}}")
     } else {
-        const SUPERSCRIPTS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
-        let e: String = e
-            .chars()
-            .map(|c| match c.to_digit(10) {
-                Some(d) => SUPERSCRIPTS[d as usize],
-                None => '⁻',
-            })
-            .collect();
+        let e: String = e.chars().map(superscript).collect();
         format!("{m} × 10{e}")
+    }
+}
+
+/// `x` as a power of ten, as label markup: `10^{−4}`, or with one
+/// decimal of mantissa where it is not 1: `1.1·10^{−16}`, `−2.5·10^{3}`.
+pub fn power(x: f64) -> String {
+    if x == 0.0 {
+        return "0".to_string();
+    }
+    let exponent = x.abs().log10().floor() as i32;
+    let mantissa = x / 10f64.powi(exponent);
+    let mut m = format!("{mantissa:.1}");
+    // 9.96 rounds up to 10.0: one more power of ten
+    let exponent = if m.trim_start_matches('-') == "10.0" {
+        m = format!("{:.1}", mantissa / 10.0);
+        exponent + 1
+    } else {
+        exponent
+    };
+    let power = if exponent < 0 {
+        format!("10^{{−{}}}", -exponent)
+    } else {
+        format!("10^{{{exponent}}}")
+    };
+    match m.as_str() {
+        "1.0" => power,
+        "-1.0" => format!("−{power}"),
+        _ => format!("{}·{power}", m.replace('-', "−")),
+    }
+}
+
+/// [`power`] in plain Unicode, for captions: `1.1·10⁻¹⁶`.
+pub fn power_text(x: f64) -> String {
+    let markup = power(x);
+    let Some((mantissa, exponent)) = markup.split_once("^{") else {
+        return markup;
+    };
+    let raised: String = exponent
+        .trim_end_matches('}')
+        .chars()
+        .map(superscript)
+        .collect();
+    format!("{mantissa}{raised}")
+}
+
+/// A digit or minus sign raised: `−` → `⁻`, `4` → `⁴`; anything else as it is.
+pub fn superscript(c: char) -> char {
+    const SUPERSCRIPTS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    match c {
+        '−' | '-' => '⁻',
+        _ => c.to_digit(10).map_or(c, |d| SUPERSCRIPTS[d as usize]),
+    }
+}
+
+/// An axis label on a log axis that draws zeros at `floor`: "0" at or
+/// below it, whole numbers from 1 up, the rest as they are (`0.1`).
+pub fn floored(y: f64, floor: f64) -> String {
+    if y <= floor {
+        "0".to_string()
+    } else if y >= 1.0 {
+        format!("{y:.0}")
+    } else {
+        format!("{y}")
     }
 }
 
@@ -85,6 +141,15 @@ mod tests {
         assert_eq!(scientific(0.0, false), "0");
         assert_eq!(grouped(14_400), "14\u{2009}400");
         assert_eq!(grouped(999), "999");
+        assert_eq!(floored(0.01, 0.01), "0");
+        assert_eq!(floored(0.1, 0.01), "0.1");
+        assert_eq!(floored(12.0, 0.01), "12");
+        assert_eq!(power(1e-4), "10^{−4}");
+        assert_eq!(power(1.1e-16), "1.1·10^{−16}");
+        assert_eq!(power(-9.96e2), "−10^{3}");
+        assert_eq!(power(2.5e3), "2.5·10^{3}");
+        assert_eq!(power_text(1.1e-16), "1.1·10⁻¹⁶");
+        assert_eq!(power_text(1e4), "10⁴");
         assert_eq!(grouped(1_179_792_000), "1\u{2009}179\u{2009}792\u{2009}000");
     }
 }

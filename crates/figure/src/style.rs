@@ -38,6 +38,19 @@ impl Color {
         )
     }
 
+    /// The colour a linear-RGB render colour is stored as (its 8-bit sRGB
+    /// levels), e.g. a material's kd drawn in a diagram.
+    pub fn from_linear(c: raystep_core::DVec3) -> Color {
+        let [r, g, b] = raystep_render::srgb8(c);
+        Color::rgb(r, g, b)
+    }
+
+    /// The linear-RGB colour whose stored sRGB levels are this colour's,
+    /// e.g. a diagram colour painted into a render.
+    pub fn to_linear(self) -> raystep_core::DVec3 {
+        raystep_render::linear_from_srgb8([self.r, self.g, self.b])
+    }
+
     /// The colour as an SVG `#rrggbb` string.
     pub(crate) fn hex(self) -> String {
         format!("#{:02x}{:02x}{:02x}", self.r, self.g, self.b)
@@ -91,6 +104,29 @@ pub mod palette {
     pub const LIGHT_GREY: Color = Color::rgb(221, 221, 221);
     /// White.
     pub const WHITE: Color = Color::rgb(255, 255, 255);
+    /// Dark grey, for notes and secondary text.
+    pub const NOTE: Color = Color::rgb(85, 85, 85);
+
+    /// What the colours mean in every chapter's figures, so that a normal
+    /// or a shadow ray looks the same from chapter 01 to chapter 10.
+    pub mod role {
+        use super::*;
+
+        /// A surface normal N.
+        pub const NORMAL: Color = VERMILION;
+        /// A primary ray, or a ray's direction D.
+        pub const RAY: Color = BLUE;
+        /// A light, and the rays that reach it.
+        pub const LIGHT: Color = ORANGE;
+        /// A reflected ray R.
+        pub const REFLECTED: Color = PURPLE;
+        /// A refracted (transmitted) ray T.
+        pub const REFRACTED: Color = SKY_BLUE;
+        /// A shadow ray that reaches its light (Sᵢ = 1).
+        pub const LIT: Color = GREEN;
+        /// A shadow ray that is blocked (Sᵢ = 0).
+        pub const BLOCKED: Color = VERMILION;
+    }
 }
 
 /// How a line is drawn. Width and dash lengths are in page px, whatever the world scale.
@@ -112,6 +148,16 @@ impl Stroke {
             width: 2.0,
             dash: None,
         }
+    }
+
+    /// Construction lines: 1.5 px black.
+    pub fn ink() -> Stroke {
+        Stroke::new(palette::BLACK).width(1.5)
+    }
+
+    /// A vector arrow's stroke: 2.5 px in `color`.
+    pub fn vector(color: Color) -> Stroke {
+        Stroke::new(color).width(2.5)
     }
 
     /// The same stroke with width `w` px.

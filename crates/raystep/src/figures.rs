@@ -4,24 +4,9 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use crate::chapters::{CHAPTERS, find};
 use crate::{Error, shown, workspace};
-use raystep_figure::{Figure, Format};
-
-/// A chapter id and the function that draws its figures.
-pub type ChapterFigures = (&'static str, fn() -> Vec<Figure>);
-
-/// Every chapter's figures, in lecture order: the one place that names the
-/// chapter crates. A new chapter adds its line here (and its dependency in
-/// `crates/raystep/Cargo.toml`).
-pub const CHAPTERS: &[ChapterFigures] = &[
-    ("ch01", ch01::figures::all),
-    ("ch02", ch02::figures::all),
-    ("ch03", ch03::figures::all),
-    ("ch04", ch04::figures::all),
-    ("ch05", ch05::figures::all),
-    ("ch06", ch06::figures::all),
-    ("ch07", ch07::figures::all),
-];
+use raystep_figure::{Chapter, Format};
 
 /// What `raystep figures` was asked to do.
 #[derive(Debug)]
@@ -43,8 +28,8 @@ pub fn default_out(root: &Path) -> PathBuf {
 
 /// Runs `raystep figures`.
 pub fn run(options: &Options) -> Result<ExitCode, Error> {
-    let chapters: Vec<ChapterFigures> = match &options.chapter {
-        Some(arg) => vec![*workspace::resolve(arg, CHAPTERS, |c| c.0)?],
+    let chapters: Vec<&Chapter> = match &options.chapter {
+        Some(arg) => vec![find(arg, CHAPTERS)?],
         None => CHAPTERS.to_vec(),
     };
     let out = match &options.out {
@@ -59,11 +44,12 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
 }
 
 /// Writes every figure and lists the files.
-fn write(chapters: &[ChapterFigures], out: &Path, format: Format) -> Result<ExitCode, Error> {
+fn write(chapters: &[&Chapter], out: &Path, format: Format) -> Result<ExitCode, Error> {
     let mut counts = Vec::new();
     let mut total = 0;
-    for (id, figures) in chapters {
-        let written = raystep_figure::write_all(&figures(), &out.join(id), format)?;
+    for chapter in chapters {
+        let id = chapter.id;
+        let written = raystep_figure::write_all(&chapter.all_figures(), &out.join(id), format)?;
         for path in &written {
             println!("{}", shown(path));
         }
@@ -80,13 +66,17 @@ fn write(chapters: &[ChapterFigures], out: &Path, format: Format) -> Result<Exit
 }
 
 /// Compares every figure with the files in `out`, writing nothing.
-fn check(chapters: &[ChapterFigures], out: &Path, format: Format) -> Result<ExitCode, Error> {
+fn check(chapters: &[&Chapter], out: &Path, format: Format) -> Result<ExitCode, Error> {
     let mut mismatches = Vec::new();
     let mut expected = 0;
-    for (id, figures) in chapters {
-        let figures = figures();
+    for chapter in chapters {
+        let figures = chapter.all_figures();
         expected += figures.len() * format.extensions().len();
-        mismatches.extend(raystep_figure::check_all(&figures, &out.join(id), format)?);
+        mismatches.extend(raystep_figure::check_all(
+            &figures,
+            &out.join(chapter.id),
+            format,
+        )?);
     }
     if mismatches.is_empty() {
         println!(
@@ -112,22 +102,5 @@ fn plural(n: usize, word: &str) -> String {
         word.to_string()
     } else {
         format!("{word}s")
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_figure_table_lists_every_chapter_folder_in_order() {
-        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
-        let folders: Vec<String> = workspace::chapters(&root)
-            .unwrap()
-            .into_iter()
-            .map(|c| c.id)
-            .collect();
-        let table: Vec<&str> = CHAPTERS.iter().map(|c| c.0).collect();
-        assert_eq!(table, folders);
     }
 }

@@ -8,6 +8,7 @@
 //! * `raystep check ch01` runs a chapter's tests in student mode and says,
 //!   exercise by exercise, what passes.
 
+mod chapters;
 mod check;
 mod figures;
 mod measure;

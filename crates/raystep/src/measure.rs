@@ -8,7 +8,9 @@ use std::process::ExitCode;
 
 use indicatif::{ProgressBar, ProgressStyle};
 
+use crate::chapters::{CHAPTERS, find};
 use crate::{Error, shown};
+use raystep_figure::{Chapter, Measurement};
 
 /// What `raystep measure` was asked to do.
 #[derive(Debug)]
@@ -21,73 +23,6 @@ pub struct Options {
     pub out: Option<PathBuf>,
 }
 
-/// One chapter's timing run: where its CSV goes, what the progress bar
-/// counts, and the run itself.
-pub struct Measurement {
-    /// The chapter's id, `ch04`, and the folder the CSV goes to.
-    pub chapter: &'static str,
-    /// The progress bar's name.
-    what: &'static str,
-    /// The CSV file's name in the chapter's folder.
-    pub file: &'static str,
-    /// How many steps the run reports, given the repeats.
-    steps: fn(usize) -> u64,
-    /// Runs with this many repeats per data point, calling back per step,
-    /// and returns the CSV text, or what is missing (a message naming the
-    /// file).
-    run: fn(usize, &mut dyn FnMut()) -> Result<String, String>,
-}
-
-/// Every chapter's measurement, in lecture order.
-pub const MEASUREMENTS: &[Measurement] = &[
-    // Chapter 04: acne and leaks against render time.
-    Measurement {
-        chapter: "ch04",
-        what: "ch04 acne",
-        file: "acne.csv",
-        steps: |_| {
-            (ch04::measure::CHART_STRATEGIES.len() * ch04::measure::CHART_SCALES.len()) as u64
-        },
-        run: |repeats, step| {
-            let rows = ch04::measure::measure_acne(repeats, step);
-            Ok(ch04::measure::to_csv(&rows))
-        },
-    },
-    // Chapter 05: the stopping rules' error against render time.
-    Measurement {
-        chapter: "ch05",
-        what: "ch05 stopping",
-        file: "stopping.csv",
-        steps: |rounds| (ch05::measure::CHART_SCENES.len() * rounds) as u64,
-        run: |repeats, step| {
-            let rows = ch05::measure::measure_stopping(repeats, step);
-            Ok(ch05::measure::to_csv(&rows))
-        },
-    },
-    // Chapter 06: Schlick and no Fresnel split against the exact split.
-    Measurement {
-        chapter: "ch06",
-        what: "ch06 fresnel",
-        file: "fresnel.csv",
-        steps: |_| ch06::REFRACTIVE_INDICES.len() as u64,
-        run: |repeats, step| {
-            let rows = ch06::measure::measure_fresnel(repeats, step);
-            Ok(ch06::measure::to_csv(&rows))
-        },
-    },
-    // Chapter 07: rasterizing and ray casting against the triangle count.
-    Measurement {
-        chapter: "ch07",
-        what: "ch07 scaling",
-        file: "scaling.csv",
-        steps: |rounds| ch07::measure::steps(rounds),
-        run: |repeats, step| {
-            let rows = ch07::measure::measure_scaling(repeats, step)?;
-            Ok(ch07::measure::to_csv(&rows))
-        },
-    },
-];
-
 /// Runs every measurement (or one chapter's) and writes its CSV.
 pub fn run(options: &Options) -> Result<ExitCode, Error> {
     if options.repeats == 0 {
@@ -97,16 +32,27 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         Some(out) => out.clone(),
         None => crate::figures::default_out(&crate::workspace::root()),
     };
-    let chosen: Vec<&Measurement> = match &options.chapter {
-        Some(arg) => vec![crate::workspace::resolve(arg, MEASUREMENTS, |m| m.chapter)?],
-        None => MEASUREMENTS.iter().collect(),
+    let measured: Vec<&Chapter> = CHAPTERS
+        .iter()
+        .copied()
+        .filter(|c| !c.measurements.is_empty())
+        .collect();
+    let chosen: Vec<(&Chapter, &Measurement)> = match &options.chapter {
+        Some(arg) => {
+            let chapter = find(arg, &measured)?;
+            chapter.measurements.iter().map(|m| (chapter, m)).collect()
+        }
+        None => measured
+            .iter()
+            .flat_map(|c| c.measurements.iter().map(move |m| (*c, m)))
+            .collect(),
     };
-    for measurement in chosen {
+    for (chapter, measurement) in chosen {
         let bar = progress_bar((measurement.steps)(options.repeats), measurement.what);
         let csv = (measurement.run)(options.repeats, &mut || bar.inc(1));
         bar.finish_and_clear();
-        let csv = csv.map_err(|e| Error::Usage(format!("{}: {e}", measurement.chapter)))?;
-        let path = out.join(measurement.chapter).join(measurement.file);
+        let csv = csv.map_err(|e| Error::Usage(format!("{}: {e}", chapter.id)))?;
+        let path = out.join(chapter.id).join(measurement.file);
         write_atomically(&path, csv.as_bytes())?;
         println!("wrote {} ({} rows)", shown(&path), csv.lines().count() - 1);
     }
@@ -168,21 +114,27 @@ mod tests {
             }
         }
         committed.sort();
-        let measured: Vec<String> = MEASUREMENTS
+        let measured: Vec<String> = CHAPTERS
             .iter()
-            .map(|m| format!("{}/{}", m.chapter, m.file))
+            .flat_map(|c| {
+                c.measurements
+                    .iter()
+                    .map(|m| format!("{}/{}", c.id, m.file))
+            })
             .collect();
         assert_eq!(committed, measured);
     }
 
     #[test]
     fn a_measurement_is_chosen_by_chapter() {
-        let found = crate::workspace::resolve("5", MEASUREMENTS, |m| m.chapter).unwrap();
-        assert_eq!(found.file, "stopping.csv");
-        let error = crate::workspace::resolve("02", MEASUREMENTS, |m| m.chapter)
-            .err()
-            .unwrap()
-            .to_string();
-        assert!(error.contains("ch04, ch05, ch06"), "{error}");
+        let measured: Vec<&Chapter> = CHAPTERS
+            .iter()
+            .copied()
+            .filter(|c| !c.measurements.is_empty())
+            .collect();
+        let found = find("5", &measured).unwrap();
+        assert_eq!(found.measurements[0].file, "stopping.csv");
+        let error = find("02", &measured).err().unwrap().to_string();
+        assert!(error.contains("ch04, ch05, ch06, ch07"), "{error}");
     }
 }

@@ -3,65 +3,16 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use raystep_render::{Image, Progress, RenderOptions};
-use raystep_scene::{MAX_SIZE, Scene};
+use raystep_render::{Progress, RenderOptions};
+use raystep_scene::MAX_SIZE;
 
+use crate::chapters::{CHAPTERS, find};
 use crate::{Error, shown};
-
-/// A chapter's renderer: the scene (with its size already chosen), the
-/// file name for messages, and how to run.
-type Renderer = fn(&Scene, &str, &RenderOptions) -> Result<Image, String>;
-
-/// The renderers, in lecture order; each chapter renders what it has taught
-/// so far. A scene is rendered by its own chapter's renderer when it lies in
-/// a chapter folder, else by the latest.
-const RENDERERS: &[(&str, Renderer)] = &[
-    ("ch03", render_ch03),
-    ("ch04", render_ch04),
-    ("ch05", render_ch05),
-    ("ch06", render_ch06),
-    ("ch07", render_ch07),
-];
+use raystep_figure::{Chapter, Renderer};
 
 /// The renderer of a scene outside any chapter folder: the most complete
 /// tracer.
 const DEFAULT_RENDERER: &str = "ch06";
-
-/// Chapter 03: the local model, every light visible.
-fn render_ch03(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
-    let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
-    ch03::render(&world, ch03::Terms::All, options).map_err(|e| e.to_string())
-}
-
-/// Chapter 04: shadow rays, with the scale-aware offset against acne.
-fn render_ch04(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
-    let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
-    ch04::render(&world, ch04::Offset::ScaleAware, options).map_err(|e| e.to_string())
-}
-
-/// Chapter 05: recursive reflected rays, stopped by contribution.
-fn render_ch05(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
-    let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
-    let (image, _) =
-        ch05::render(&world, &ch05::DEFAULT_STOP, options).map_err(|e| e.to_string())?;
-    Ok(image)
-}
-
-/// Chapter 06: reflection and refraction, split by the exact Fresnel
-/// equations.
-fn render_ch06(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
-    let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
-    let (image, _) = ch06::render(&world, &ch05::DEFAULT_STOP, ch06::Fresnel::Exact, options)
-        .map_err(|e| e.to_string())?;
-    Ok(image)
-}
-
-/// Chapter 07: rasterization with a z-buffer (polygons only).
-fn render_ch07(scene: &Scene, file: &str, _options: &RenderOptions) -> Result<Image, String> {
-    let stage = ch07::Stage::from_scene(scene, file).map_err(|e| e.to_string())?;
-    let (buffers, _) = ch07::rasterize(&stage);
-    Ok(buffers.color)
-}
 
 /// What `raystep render` was asked to do.
 #[derive(Debug)]
@@ -129,8 +80,14 @@ fn parse_size(size: &str) -> Result<(u32, u32), Error> {
 /// The renderer for `--chapter`, else the chapter folder holding the scene,
 /// else the latest.
 fn choose(chapter: Option<&str>, scene: &Path) -> Result<(&'static str, Renderer), Error> {
+    let renderers: Vec<&Chapter> = CHAPTERS
+        .iter()
+        .copied()
+        .filter(|c| c.renderer.is_some())
+        .collect();
+    let pick = |c: &Chapter| (c.id, c.renderer.expect("only chapters with a renderer"));
     if let Some(arg) = chapter {
-        return Ok(*crate::workspace::resolve(arg, RENDERERS, |r| r.0)?);
+        return Ok(pick(find(arg, &renderers)?));
     }
     let in_folder = scene
         .canonicalize()
@@ -140,19 +97,10 @@ fn choose(chapter: Option<&str>, scene: &Path) -> Result<(&'static str, Renderer
                 .filter_map(|a| a.file_name()?.to_str().map(str::to_string))
                 .find(|name| name.starts_with("ch") && name.contains('-'))
         })
-        .and_then(|folder| {
-            RENDERERS
-                .iter()
-                .find(|(name, _)| folder.starts_with(name))
-                .copied()
-        });
+        .and_then(|folder| renderers.iter().find(|c| folder.starts_with(c.id)).copied());
     match in_folder {
-        Some(renderer) => Ok(renderer),
-        None => Ok(*crate::workspace::resolve(
-            DEFAULT_RENDERER,
-            RENDERERS,
-            |r| r.0,
-        )?),
+        Some(chapter) => Ok(pick(chapter)),
+        None => Ok(pick(find(DEFAULT_RENDERER, &renderers)?)),
     }
 }
 

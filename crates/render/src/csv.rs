@@ -1,8 +1,44 @@
-//! Reading back the small CSV files behind the charts: `raystep measure`
-//! writes them, `raystep figures` draws from them. Plain comma-separated
-//! fields, one header line, no quoting; every error names the line.
+//! The small CSV files behind the charts: `raystep measure` writes them,
+//! `raystep figures` draws from them. Plain comma-separated fields, one
+//! header line, no quoting; every error names the line.
+//!
+//! A chart's data is a list of rows of one type that implements
+//! [`CsvRow`]; [`to_csv`] writes them and [`from_csv`] reads them back.
 
 use std::fmt::Display;
+
+/// One row of a measured chart's CSV file.
+pub trait CsvRow: Sized {
+    /// The header line, the columns' names separated by commas.
+    const HEADER: &'static str;
+
+    /// The row as one line of fields in [`CsvRow::HEADER`]'s order,
+    /// without the line break.
+    fn to_line(&self) -> String;
+
+    /// The row of one data line; an error names the line
+    /// ([`Record::error`]).
+    fn from_record(record: &Record) -> Result<Self, String>;
+}
+
+/// The rows as CSV: the header, then one line per row.
+pub fn to_csv<R: CsvRow>(rows: &[R]) -> String {
+    let mut csv = format!("{}\n", R::HEADER);
+    for row in rows {
+        csv.push_str(&row.to_line());
+        csv.push('\n');
+    }
+    csv
+}
+
+/// Reads [`to_csv`]'s output back; an error names the line and what is
+/// wrong.
+pub fn from_csv<R: CsvRow>(text: &str) -> Result<Vec<R>, String> {
+    records(text, R::HEADER)?
+        .iter()
+        .map(R::from_record)
+        .collect()
+}
 
 /// The data lines of `text`, whose first line must be `header`; blank lines
 /// are skipped. An error names the line: a wrong header, or a line without
@@ -73,6 +109,46 @@ impl<'a> Record<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[derive(Debug, PartialEq)]
+    struct Point {
+        name: String,
+        x: f64,
+    }
+
+    impl CsvRow for Point {
+        const HEADER: &'static str = "name,x";
+        fn to_line(&self) -> String {
+            format!("{},{}", self.name, self.x)
+        }
+        fn from_record(r: &Record) -> Result<Point, String> {
+            Ok(Point {
+                name: r.text(0).to_string(),
+                x: r.number(1, "x")?,
+            })
+        }
+    }
+
+    #[test]
+    fn rows_round_trip_through_the_header() {
+        let rows = vec![
+            Point {
+                name: "a".into(),
+                x: 1.5,
+            },
+            Point {
+                name: "b".into(),
+                x: -2.0,
+            },
+        ];
+        let text = to_csv(&rows);
+        assert_eq!(text, "name,x\na,1.5\nb,-2\n");
+        assert_eq!(from_csv::<Point>(&text).unwrap(), rows);
+        assert_eq!(
+            from_csv::<Point>("name,x\na,y\n"),
+            Err("line 2: x `y` is not a number".to_string())
+        );
+    }
 
     #[test]
     fn fields_numbers_counts_and_errors_name_the_line() {

@@ -31,6 +31,15 @@ pub struct RenderOptions {
     pub progress: Progress,
 }
 
+impl RenderOptions {
+    /// Every core, never a progress bar: for figures and measurements,
+    /// whose images are the same for any number of threads.
+    pub const QUIET: RenderOptions = RenderOptions {
+        threads: None,
+        progress: Progress::Never,
+    };
+}
+
 /// Renders a `width × height` image: pixel `(x, y)` (column `x` from the
 /// left, row `y` from the top) is `pixel(x, y)`.
 ///

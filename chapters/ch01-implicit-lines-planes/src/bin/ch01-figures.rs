@@ -1,4 +1,0 @@
-//! Draws chapter 01's lecture figures: `cargo run -p ch01-implicit-lines-planes --bin ch01-figures -- --out DIR`.
-fn main() -> std::process::ExitCode {
-    raystep_figure::diagram_main("ch01", ch01::figures::all)
-}

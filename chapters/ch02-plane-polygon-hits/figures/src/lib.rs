@@ -1,0 +1,18 @@
+//! Chapter 02 — plane and polygon hits: the lecture's figures, drawn
+//! from the chapter's public API, and the chapter's entry in the command
+//! line ([`CHAPTER`]).
+mod figures;
+
+use raystep_figure::Chapter;
+
+/// What chapter 02 hands `raystep figures`, `measure`, `render` and `check`.
+pub const CHAPTER: Chapter = Chapter {
+    id: "ch02",
+    title: "Plane and polygon hits",
+    package: "ch02-plane-polygon-hits",
+    exercises: &["ray_plane", "inside_polygon"],
+    figures: figures::all,
+    charts: &[],
+    measurements: &[],
+    renderer: None,
+};

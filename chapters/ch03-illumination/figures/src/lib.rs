@@ -1,0 +1,27 @@
+//! Chapter 03 — illumination: the lecture's figures, drawn
+//! from the chapter's public API, and the chapter's entry in the command
+//! line ([`CHAPTER`]).
+mod figures;
+
+use raystep_figure::Chapter;
+use raystep_render::{Image, RenderOptions};
+use raystep_scene::Scene;
+
+/// What chapter 03 hands `raystep figures`, `measure`, `render` and `check`.
+pub const CHAPTER: Chapter = Chapter {
+    id: "ch03",
+    title: "Illumination",
+    package: "ch03-illumination",
+    exercises: &["sphere_hit", "reflect", "local_shading"],
+    figures: figures::all,
+    charts: &[],
+    measurements: &[],
+    renderer: Some(render),
+};
+
+/// `raystep render` with chapter 03's tracer: the local model, every light
+/// visible.
+fn render(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
+    let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
+    ch03::render(&world, ch03::Terms::All, options).map_err(|e| e.to_string())
+}

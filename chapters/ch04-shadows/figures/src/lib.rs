@@ -1,0 +1,35 @@
+//! Chapter 04 — shadows: the lecture's figures, charts and measurements, drawn
+//! from the chapter's public API, and the chapter's entry in the command
+//! line ([`CHAPTER`]).
+mod chart;
+mod figures;
+pub mod measure;
+
+use raystep_figure::{Chapter, Measurement};
+use raystep_render::csv::to_csv;
+use raystep_render::{Image, RenderOptions};
+use raystep_scene::Scene;
+
+/// What chapter 04 hands `raystep figures`, `measure`, `render` and `check`.
+pub const CHAPTER: Chapter = Chapter {
+    id: "ch04",
+    title: "Shadows",
+    package: "ch04-shadows",
+    exercises: &["shadow", "normal_offset"],
+    figures: figures::all,
+    charts: &[chart::acne_chart],
+    measurements: &[Measurement {
+        what: "ch04 acne",
+        file: "acne.csv",
+        steps: |_| (measure::CHART_STRATEGIES.len() * measure::CHART_SCALES.len()) as u64,
+        run: |repeats, step| Ok(to_csv(&measure::measure_acne(repeats, step))),
+    }],
+    renderer: Some(render),
+};
+
+/// `raystep render` with chapter 04's tracer: shadow rays, with the
+/// scale-aware offset against acne.
+fn render(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
+    let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
+    ch04::render(&world, ch04::Offset::ScaleAware, options).map_err(|e| e.to_string())
+}

@@ -1,0 +1,37 @@
+//! Chapter 05 — reflection: the lecture's figures, charts and measurements, drawn
+//! from the chapter's public API, and the chapter's entry in the command
+//! line ([`CHAPTER`]).
+mod chart;
+mod figures;
+pub mod measure;
+
+use raystep_figure::{Chapter, Measurement};
+use raystep_render::csv::to_csv;
+use raystep_render::{Image, RenderOptions};
+use raystep_scene::Scene;
+
+/// What chapter 05 hands `raystep figures`, `measure`, `render` and `check`.
+pub const CHAPTER: Chapter = Chapter {
+    id: "ch05",
+    title: "Reflection",
+    package: "ch05-reflection",
+    exercises: &["reflection", "recursion"],
+    figures: figures::all,
+    charts: &[chart::stopping_chart],
+    measurements: &[Measurement {
+        what: "ch05 stopping",
+        file: "stopping.csv",
+        steps: |rounds| (measure::CHART_SCENES.len() * rounds) as u64,
+        run: |repeats, step| Ok(to_csv(&measure::measure_stopping(repeats, step))),
+    }],
+    renderer: Some(render),
+};
+
+/// `raystep render` with chapter 05's tracer: recursive reflected rays,
+/// stopped by contribution.
+fn render(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
+    let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
+    let (image, _) =
+        ch05::render(&world, &ch05::DEFAULT_STOP, options).map_err(|e| e.to_string())?;
+    Ok(image)
+}

@@ -1,4 +1,0 @@
-//! Draws chapter 06's lecture figures: `cargo run -p ch06-refraction --bin ch06-figures -- --out DIR`.
-fn main() -> std::process::ExitCode {
-    raystep_figure::diagram_main("ch06", ch06::figures::all)
-}
