@@ -1,7 +1,7 @@
 //! Exercise 3: the lecture's local illumination model.
 //!
 //! Fill in `shading_terms`; `cargo run --release -- check ch03` judges it.
-use crate::{LightSample, ShadingTerms, reflect};
+use crate::{LightSample, ShadingTerms, reflect_light};
 use raystep_core::DVec3;
 use raystep_scene::Material;
 
@@ -22,8 +22,8 @@ pub fn shading_terms(
 ) -> ShadingTerms {
     // TODO: ambient = ka·Ia (component-wise: DVec3 * DVec3 multiplies per
     // channel). For each light with N·Lᵢ > 0 add Sᵢ·Iᵢ·kd·(N·Lᵢ) to diffuse
-    // and Sᵢ·Iᵢ·ks·max(Rᵢ·V, 0)^p to specular, with Rᵢ = reflect(Lᵢ, N).
+    // and Sᵢ·Iᵢ·ks·max(Rᵢ·V, 0)^p to specular, with Rᵢ = reflect_light(Lᵢ, N).
     // Skip lights with N·Lᵢ ≤ 0 entirely (no highlight either).
-    let _ = (material, normal, to_eye, ambient, lights, reflect);
+    let _ = (material, normal, to_eye, ambient, lights, reflect_light);
     todo!()
 }

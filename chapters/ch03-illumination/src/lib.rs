@@ -31,7 +31,7 @@ pub use raystep_core::{Aabb, Camera, DVec3, Hit, Interval, Ray, Shape};
 pub use raystep_render::{Image, RenderOptions};
 pub use raystep_scene::{Light, Material, Scene};
 pub use raystep_world::{Accelerator, Object, World, WorldError};
-pub use reflect::reflect;
+pub use reflect::reflect_light;
 pub use shading::{LightSample, ShadingTerms};
 pub use sphere::Sphere;
 pub use trace::{Terms, render, render_with, shade, shade_hit, shade_with, trace};

@@ -1,5 +1,5 @@
 //! Exercise 2: the reflection Rᵢ of the light direction.
-use ch03::{DVec3, reflect};
+use ch03::{DVec3, reflect_light};
 use proptest::prelude::*;
 use raystep_check::{Table, seeded, unit_vector, vec3};
 
@@ -20,7 +20,12 @@ fn reflect_table() {
     ];
     let mut table = Table::new(&["case", "L", "N", "R"]);
     for (name, l, n) in cases {
-        table.row(&[name.to_string(), vec3(l), vec3(n), vec3(reflect(l, n))]);
+        table.row(&[
+            name.to_string(),
+            vec3(l),
+            vec3(n),
+            vec3(reflect_light(l, n)),
+        ]);
     }
     insta::assert_snapshot!(table.to_string());
 }
@@ -32,7 +37,7 @@ proptest! {
     /// N (the mirror keeps the normal part and flips the rest).
     #[test]
     fn mirror_properties(l in unit_vector(), n in unit_vector()) {
-        let r = reflect(l, n);
+        let r = reflect_light(l, n);
         prop_assert!((r.length() - 1.0).abs() <= 1e-12);
         prop_assert!((r.dot(n) - l.dot(n)).abs() <= 1e-12);
         prop_assert!((r + l).cross(n).length() <= 1e-12);

@@ -1,5 +1,5 @@
 //! Exercise 2: the recursive tracer with both stopping rules.
-// You will need: crate::reflect_direction, ch04::offset_scale_aware.
+// You will need: crate::reflect_ray, ch04::offset_scale_aware.
 use crate::{Path, Tracer};
 use raystep_core::{DVec3, Ray};
 
@@ -22,7 +22,7 @@ impl Tracer<'_> {
         //    on the side the ray came from,
         //    offset_scale_aware(hit.point, normal) with
         //    normal = hit.facing(ray.direction), and goes
-        //    reflect_direction(ray.direction, normal).
+        //    reflect_ray(ray.direction, normal).
         // 4. Its path is next = path.then(kr). If self.allows(&reflected,
         //    next) (not too deep, not worth too little), add
         //    kr * self.trace(&reflected, next): the recursion.

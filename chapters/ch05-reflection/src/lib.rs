@@ -4,7 +4,7 @@
 //! left out: kr·Lr, the light Lr that arrives along the mirror direction,
 //! scaled by the surface's reflectance kr. Lr is whatever a ray shot in
 //! that direction sees, so the tracer calls itself: a *recursive* ray,
-//! R = D − 2(D·N)N ([`reflect_direction`]).
+//! R = D − 2(D·N)N ([`reflect_ray`]).
 //!
 //! Recursion needs a rule to stop. The lecture gives two ([`Stop`]):
 //! a maximum depth, or a ray's *contribution*, the product of the k's
@@ -31,6 +31,6 @@ pub use ch03::{Object, World};
 pub use ray_tree::{LoggedRay, RayCounts, RayLog};
 pub use raystep_core::{Camera, DVec3, Hit, Interval, Ray};
 pub use raystep_render::{Image, RenderError, RenderOptions};
-pub use reflection::reflect_direction;
+pub use reflection::reflect_ray;
 pub use stop::{Cut, DEFAULT_STOP, Path, SAFETY_DEPTH, Stop};
 pub use trace::{Tracer, pixel_tree, ray_tree, render, trace_counted};

@@ -1,5 +1,5 @@
 //! Exercise 2: the recursive tracer with both stopping rules.
-use crate::{Path, Tracer, reflect_direction};
+use crate::{Path, Tracer, reflect_ray};
 use ch04::offset_scale_aware;
 use raystep_core::{DVec3, Ray};
 
@@ -28,7 +28,7 @@ impl Tracer<'_> {
         let normal = hit.facing(ray.direction);
         let reflected = Ray::new(
             offset_scale_aware(hit.point, normal),
-            reflect_direction(ray.direction, normal),
+            reflect_ray(ray.direction, normal),
         );
         // Step 4: the stopping rules: is the reflected ray too deep, or
         // worth too little? Then Lr counts as 0.

@@ -1,7 +1,7 @@
 //! Exercise 1: the direction of the reflected ray.
 use raystep_core::DVec3;
 
-// ANCHOR: reflect_direction
+// ANCHOR: reflect_ray
 /// The lecture's reflected ray direction R = D − 2(D·N)N.
 ///
 /// `d` is the incoming ray's direction D (toward the surface, any length)
@@ -9,7 +9,7 @@ use raystep_core::DVec3;
 /// too, and R stays the same). R has D's length, and the angle between R
 /// and the surface equals the angle between D and it: the component of D
 /// along N changes sign, the component along the surface is kept.
-pub fn reflect_direction(d: DVec3, n: DVec3) -> DVec3 {
+pub fn reflect_ray(d: DVec3, n: DVec3) -> DVec3 {
     d - 2.0 * d.dot(n) * n
 }
-// ANCHOR_END: reflect_direction
+// ANCHOR_END: reflect_ray

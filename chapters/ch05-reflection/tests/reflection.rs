@@ -1,5 +1,5 @@
 //! Exercise 1: the reflected direction R = D − 2(D·N)N.
-use ch05::{DVec3, reflect_direction};
+use ch05::{DVec3, reflect_ray};
 use proptest::prelude::*;
 use raystep_check::{Table, num_places, seeded, unit_vector, vec3};
 
@@ -31,7 +31,7 @@ fn hand_worked_cases() {
         ("onto a wall", v(-2.0, 1.0, -0.5), DVec3::X, v(2.0, 1.0, -0.5)),
     ];
     for (name, d, n, expected) in cases {
-        let r = reflect_direction(d, n);
+        let r = reflect_ray(d, n);
         assert!(
             (r - expected).length() <= 1e-15,
             "{name}: D = {d}, N = {n}: R should be {expected}, got {r}"
@@ -65,7 +65,7 @@ fn reflected_directions_table() {
             // as long
             let length = if name == "wall" { 2.0 } else { 1.0 };
             let d = length * (sin * tangent - cos * side * n);
-            let r = reflect_direction(d, n);
+            let r = reflect_ray(d, n);
             // θ out: the angle between R and the side of N it leaves on
             // (the side D came from)
             let out_side = if d.dot(n) <= 0.0 { n } else { -n };
@@ -97,12 +97,12 @@ proptest! {
         n in unit_vector(),
     ) {
         let d = length * direction;
-        let r = reflect_direction(d, n);
+        let r = reflect_ray(d, n);
         let tolerance = 1e-12 * length;
         prop_assert!((r.length() - d.length()).abs() <= tolerance, "|R| {} ≠ |D| {}", r.length(), d.length());
         prop_assert!((r.dot(n) + d.dot(n)).abs() <= tolerance, "R·N {} ≠ −D·N {}", r.dot(n), -d.dot(n));
         prop_assert!((r - d).cross(n).length() <= tolerance, "R − D = {} is not along N = {}", r - d, n);
-        prop_assert!((reflect_direction(d, -n) - r).length() <= tolerance, "−N gives another R");
-        prop_assert!((reflect_direction(r, n) - d).length() <= tolerance, "reflecting twice does not give D back");
+        prop_assert!((reflect_ray(d, -n) - r).length() <= tolerance, "−N gives another R");
+        prop_assert!((reflect_ray(r, n) - d).length() <= tolerance, "reflecting twice does not give D back");
     }
 }

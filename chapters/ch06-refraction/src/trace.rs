@@ -4,7 +4,7 @@ use std::sync::Mutex;
 
 use ch03::{World, render_with};
 use ch04::offset_scale_aware;
-use ch05::{LoggedRay, Path, Stop, reflect_direction};
+use ch05::{LoggedRay, Path, Stop, reflect_ray};
 use raystep_core::{DVec3, Ray};
 use raystep_render::{Image, RenderError, RenderOptions};
 
@@ -192,7 +192,7 @@ impl<'a> Tracer<'a> {
         if wr != DVec3::ZERO {
             let reflected = Ray::new(
                 offset_scale_aware(hit.point, normal),
-                reflect_direction(direction, normal),
+                reflect_ray(direction, normal),
             );
             let next = path.then(wr);
             if self.rays.allows(&reflected, next) {

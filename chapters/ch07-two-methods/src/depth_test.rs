@@ -1,37 +1,9 @@
 //! Exercise 2: the z-buffer's depth test.
 
-// ANCHOR: depth_buffer
-/// One depth per pixel: the view depth of the closest surface drawn there
-/// so far, +∞ where nothing is drawn yet.
-#[derive(Clone, Debug, PartialEq)]
-pub struct DepthBuffer {
-    width: u32,
-    depths: Vec<f64>,
-}
+use crate::DepthBuffer;
 
 impl DepthBuffer {
-    /// A `width × height` buffer with nothing drawn: every depth +∞.
-    pub fn new(width: u32, height: u32) -> DepthBuffer {
-        DepthBuffer {
-            width,
-            depths: vec![f64::INFINITY; width as usize * height as usize],
-        }
-    }
-
-    /// The depth at pixel (column, row).
-    pub fn get(&self, column: u32, row: u32) -> f64 {
-        self.depths[self.index(column, row)]
-    }
-
-    /// Every depth, row by row from the top.
-    pub fn depths(&self) -> &[f64] {
-        &self.depths
-    }
-
-    fn index(&self, column: u32, row: u32) -> usize {
-        row as usize * self.width as usize + column as usize
-    }
-
+    // ANCHOR: test_and_set
     /// The z test: is a surface at depth `z` closer than what pixel
     /// (column, row) shows? If so it is kept (the buffer remembers `z`)
     /// and the caller shades the pixel; if not, the buffer is unchanged.
@@ -46,8 +18,8 @@ impl DepthBuffer {
             false
         }
     }
+    // ANCHOR_END: test_and_set
 }
-// ANCHOR_END: depth_buffer
 
 // ANCHOR: perspective_depth
 /// The view depth at a point of a triangle on screen, from its weights

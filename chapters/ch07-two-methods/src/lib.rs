@@ -17,6 +17,7 @@
 mod agree;
 mod buffers;
 mod clip;
+mod depth_buffer;
 mod project;
 mod raster;
 mod raycast;
@@ -36,7 +37,8 @@ pub use buffers::Buffers;
 pub use ch03::{Object, World};
 pub use clip::{NEAR, clip_near};
 pub use coverage::{barycentric, covers};
-pub use depth_test::{DepthBuffer, perspective_depth};
+pub use depth_buffer::DepthBuffer;
+pub use depth_test::perspective_depth;
 pub use project::Projection;
 pub use raster::{RasterCounts, rasterize};
 pub use raycast::raycast;

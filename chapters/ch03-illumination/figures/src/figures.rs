@@ -1,7 +1,7 @@
 //! The chapter's lecture figures, drawn from the reference code.
 //!
 //! The side views trace the real scene `scenes/spheres.toml` with
-//! [`World::closest_hit`]; the reflected direction is [`reflect`]'s; the
+//! [`World::closest_hit`]; the reflected direction is [`reflect_light`]'s; the
 //! rendered panels come from [`render`] and [`render_with`].
 use std::path::Path;
 
@@ -11,7 +11,7 @@ use raystep_render::RenderOptions;
 
 use raystep_scene::{Scene, Shape as ShapeSpec};
 
-use ch03::{Interval, Ray, ShadingTerms, Terms, World, reflect, render, render_with, shade};
+use ch03::{Interval, Ray, ShadingTerms, Terms, World, reflect_light, render, render_with, shade};
 
 /// Every figure of this chapter, in the order the lecture shows them.
 pub fn all() -> Vec<Figure> {
@@ -184,7 +184,7 @@ fn vectors() -> Figure {
     let alpha = 22f64.to_radians();
     let n = DVec3::Y;
     let l = DVec3::new(-theta.sin(), theta.cos(), 0.0);
-    let r = reflect(l, n);
+    let r = reflect_light(l, n);
     // V: α past R, away from N
     let (rs, rc) = (alpha.sin(), alpha.cos());
     let v = DVec3::new(rc * r.x + rs * r.y, -rs * r.x + rc * r.y, 0.0);
@@ -299,7 +299,7 @@ fn other_rays() -> Figure {
         "primary ray",
         Anchor::N,
     );
-    let reflected = reflect(-ray.direction, n);
+    let reflected = reflect_light(-ray.direction, n);
     let refracted = refract(ray.direction, n, 1.5).expect("entering glass refracts");
     let len = 2.4;
     let tip = p + len * view.dir(reflected);

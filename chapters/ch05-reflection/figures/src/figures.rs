@@ -1,7 +1,7 @@
 //! The chapter's lecture figures, drawn from the reference code.
 //!
 //! Every vector and number shown comes from the chapter's code: the
-//! reflected direction from [`reflect_direction`], the ray trees from
+//! reflected direction from [`reflect_ray`], the ray trees from
 //! [`pixel_tree`] on the real facing mirrors, the renders, ray counts and
 //! errors from [`render`] and [`image_error`].
 use raystep_figure::numbers::fixed;
@@ -11,7 +11,7 @@ use raystep_render::{RenderOptions, image_error};
 
 use crate::measure::{REFERENCE, chart_world};
 use ch05::{
-    Cut, DEFAULT_STOP, Interval, LoggedRay, Ray, Stop, World, pixel_tree, reflect_direction, render,
+    Cut, DEFAULT_STOP, Interval, LoggedRay, Ray, Stop, World, pixel_tree, reflect_ray, render,
 };
 
 /// Every figure of this chapter, in the order the lecture shows them.
@@ -59,7 +59,7 @@ fn degrees_between(a: DVec3, b: DVec3) -> f64 {
 fn reflection() -> Figure {
     let d = DVec3::new(0.8, -0.6, 0.0);
     let n = DVec3::Y;
-    let r = reflect_direction(d, n);
+    let r = reflect_ray(d, n);
     let dn = d.dot(n);
     let incidence = degrees_between(-d, n);
     let outgoing = degrees_between(r, n);
@@ -189,7 +189,7 @@ fn reflection() -> Figure {
     Figure::new(
         "reflection",
         &format!(
-            "Left: the ray D meets a mirror at P and leaves along R, at the same angle θ = {}° to the normal N, on the other side of it. Right: the same R from reflect_direction, taken apart: D's part along the surface, D − (D·N)N, is kept; its part along N, (D·N)N, is taken away twice, so that it points the other way: R = D − 2(D·N)N = [D − (D·N)N] − (D·N)N.",
+            "Left: the ray D meets a mirror at P and leaves along R, at the same angle θ = {}° to the normal N, on the other side of it. Right: the same R from reflect_ray, taken apart: D's part along the surface, D − (D·N)N, is kept; its part along N, (D·N)N, is taken away twice, so that it points the other way: R = D − 2(D·N)N = [D − (D·N)N] − (D·N)N.",
             fixed(incidence, 1)
         ),
         page,
