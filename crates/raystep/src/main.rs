@@ -76,6 +76,15 @@ enum Command {
         chapter: Option<String>,
     },
     /// Run a chapter's tests in student mode and report each exercise.
+    ///
+    /// Cargo builds the chapter's tests (`cargo test --no-run`, with the
+    /// `exercise` feature unless `--reference`); raystep then runs each test
+    /// binary itself, one after the other: the unit tests (the library's
+    /// first), then `tests/*.rs` by name.
+    /// Each exercise gets one verdict: `passed`, `failed: <test>: <message>` or
+    /// `not attempted` (every failing test stopped at `todo!()`). The verdicts
+    /// do not depend on cargo's `term` settings.
+    /// Doc tests are not run (the chapters have none).
     Check {
         /// The chapter: `ch01`, `01` or `1`.
         chapter: String,
@@ -238,7 +247,9 @@ fn main() -> ExitCode {
             chapter,
             reference,
             target_dir: target_dir
-                .or_else(|| std::env::var_os("RAYSTEP_CHECK_TARGET_DIR").map(PathBuf::from)),
+                .or_else(|| std::env::var_os("RAYSTEP_CHECK_TARGET_DIR").map(PathBuf::from))
+                // Cargo runs in the workspace root: a relative folder means the current one.
+                .map(|dir| std::path::absolute(&dir).unwrap_or(dir)),
             quiet,
         }),
     };

@@ -1,11 +1,12 @@
-//! `raystep check` on the real chapters: the reference solution passes every
-//! exercise, and the untouched stubs pass none.
+//! `raystep check` end to end: on the real chapters the reference solution
+//! passes every exercise and the untouched stubs pass none, whatever the
+//! user's cargo settings.
 //!
-//! This runs cargo from inside `cargo test`, twice per chapter (with and
-//! without the `exercise` feature). The nested cargo shares the outer target
-//! folder (`RAYSTEP_CHECK_TARGET_DIR` = the parent of `CARGO_TARGET_TMPDIR`),
-//! so it reuses every compiled dependency and rebuilds only the chapter: cargo
-//! releases its build lock before it runs test binaries, so nothing blocks.
+//! This runs cargo from inside `cargo test`. For the real chapters the nested
+//! cargo shares the outer target folder (`RAYSTEP_CHECK_TARGET_DIR` = the
+//! parent of `CARGO_TARGET_TMPDIR`), so it reuses every compiled dependency
+//! and rebuilds only the chapter; `raystep check` runs the test binaries
+//! after cargo has finished (and released its build lock).
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -50,17 +51,30 @@ fn chapters() -> Vec<(String, Vec<String>)> {
     chapters
 }
 
-/// Runs `raystep check <args>`: (success, stdout, stderr).
+/// Runs `raystep check <args> --quiet` in the workspace, building in the
+/// outer target folder: (success, stdout, stderr).
 fn check(args: &[&str]) -> (bool, String, String) {
+    raystep(args, &workspace(), |command| {
+        command.env("RAYSTEP_CHECK_TARGET_DIR", outer_target());
+    })
+}
+
+/// Runs `raystep check <args> --quiet` in `dir`, its environment adjusted by
+/// `configure`: (success, stdout, stderr).
+fn raystep(
+    args: &[&str],
+    dir: &Path,
+    configure: impl FnOnce(&mut Command),
+) -> (bool, String, String) {
     let started = Instant::now();
-    let out = Command::new(env!("CARGO_BIN_EXE_raystep"))
+    let mut command = Command::new(env!("CARGO_BIN_EXE_raystep"));
+    command
         .arg("check")
         .args(args)
         .arg("--quiet")
-        .current_dir(workspace())
-        .env("RAYSTEP_CHECK_TARGET_DIR", outer_target())
-        .output()
-        .expect("raystep runs");
+        .current_dir(dir);
+    configure(&mut command);
+    let out = command.output().expect("raystep runs");
     eprintln!(
         "raystep check {} took {:.1?}",
         args.join(" "),
@@ -115,4 +129,39 @@ fn the_reference_passes_and_the_stubs_do_not() {
             "{chapter} student mode:\n{report}{stderr}"
         );
     }
+}
+
+/// Cargo settings that change what cargo prints (no `Running` lines, coloured
+/// or verbose output) do not change a verdict.
+#[test]
+fn verdicts_do_not_depend_on_cargo_settings() {
+    const SETTINGS: [(&str, &str); 4] = [
+        ("CARGO_TERM_QUIET", "true"),
+        ("CARGO_TERM_COLOR", "always"),
+        ("CARGO_TERM_VERBOSE", "true"),
+        ("CARGO_BUILD_JOBS", "1"),
+    ];
+    let (ok, plain, stderr) = raystep(&["ch01"], &workspace(), |command| {
+        for (name, _) in SETTINGS {
+            command.env_remove(name);
+        }
+        command.env("RAYSTEP_CHECK_TARGET_DIR", outer_target());
+    });
+    assert!(!ok, "{plain}{stderr}");
+    for exercise in ["line_through_points", "plane_through_points"] {
+        assert_eq!(
+            verdict(&plain, &stderr, exercise),
+            "not attempted",
+            "{plain}{stderr}"
+        );
+    }
+
+    let (ok, configured, stderr) = raystep(&["ch01"], &workspace(), |command| {
+        command
+            .envs(SETTINGS)
+            .env("CARGO_TARGET_DIR", outer_target())
+            .env_remove("RAYSTEP_CHECK_TARGET_DIR");
+    });
+    assert!(!ok, "{configured}{stderr}");
+    assert_eq!(configured, plain, "with {SETTINGS:?}:\n{stderr}");
 }
