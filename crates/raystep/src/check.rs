@@ -1,9 +1,9 @@
 //! `raystep check chNN`: run a chapter's tests in student mode and say, for
-//! each exercise, whether it passes, fails (and where first), or is still the
-//! untouched stub.
+//! each exercise, whether it passes, fails (and where first), times out, or
+//! is still the untouched stub.
 //!
 //! Two steps, so that the verdicts do not depend on the user's cargo settings
-//! (`term.quiet`, `term.verbose`, colours):
+//! (`term.quiet`, `term.verbose`, colours) and no test can hang the terminal:
 //!
 //! 1. **Build** with `cargo test --no-run --message-format=json-render-diagnostics`
 //!    and cargo's terminal settings pinned in its environment. Cargo names
@@ -12,19 +12,22 @@
 //!    compiler errors are rendered on its stderr as usual ([`cargo_failure`]).
 //! 2. **Run** each test binary ourselves, in a fixed order (the library's unit
 //!    tests, the binaries' unit tests, then `tests/*.rs` by name), in the
-//!    package folder with the environment cargo would give it and explicit
-//!    libtest arguments.
+//!    package folder with the environment cargo would give it, explicit
+//!    libtest arguments and a time limit. A binary still running at the limit
+//!    is killed with every process it started.
 //!
 //! Doc tests are not run: the chapters have none.
 //!
 //! The parsing is pure functions over captured text ([`test_executables`],
 //! [`parse_output`], [`test_binary`], [`report`]).
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::fmt;
-use std::io::{BufRead, BufReader, Read};
+use std::io::{self, BufRead, BufReader, Read};
 use std::path::{Path, PathBuf};
-use std::process::{Command, ExitCode, ExitStatus, Stdio};
+use std::process::{Child, Command, ExitCode, ExitStatus, Stdio};
+use std::sync::{Arc, Mutex, mpsc};
+use std::time::{Duration, Instant};
 
 use crate::{Error, workspace};
 
@@ -39,10 +42,22 @@ pub struct Options {
     pub target_dir: Option<PathBuf>,
     /// Do not echo cargo's build progress.
     pub quiet: bool,
+    /// How long one test binary may run before it is killed.
+    pub timeout: Duration,
 }
+
+/// The default of `--timeout`, in seconds. The slowest test binaries of the
+/// reference solutions (chapter 07's unit tests and `tests/agreement.rs`, a
+/// debug build) take under a second on two cores; a minute leaves a wide
+/// margin for a slow machine and a slow but correct student solution, and
+/// still ends an endless loop in reasonable time.
+pub const DEFAULT_TIMEOUT_SECS: u64 = 60;
 
 /// The panic message of `todo!()`: a test that stops here has not been attempted.
 const TODO: &str = "not yet implemented";
+
+/// How long `--list` may take after a binary timed out (to name its unfinished tests).
+const LIST_LIMIT: Duration = Duration::from_secs(10);
 
 /// Runs `raystep check`.
 pub fn run(options: &Options) -> Result<ExitCode, Error> {
@@ -87,7 +102,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
             if !options.quiet {
                 eprintln!("     Running {}", executable.target);
             }
-            run_tests(executable, &cargo, threads)
+            run_tests(executable, &cargo, options.timeout, threads)
         })
         .collect();
     let report = report(&exercises, &binaries, &sources);
@@ -370,7 +385,8 @@ fn exit_reason(line: &str) -> Option<&str> {
 }
 
 /// How many tests a binary runs at once: `RUST_TEST_THREADS` if the user set
-/// it, else one per core (libtest's own default), passed explicitly.
+/// it, else one per core (libtest's own default). Passed explicitly, so that
+/// [`still_running`] knows it.
 fn test_threads() -> usize {
     std::env::var("RUST_TEST_THREADS")
         .ok()
@@ -412,8 +428,8 @@ fn test_command(executable: &Executable, cargo: &str, args: &[&str]) -> Command 
     command
 }
 
-/// Runs one test binary and reads what it printed.
-fn run_tests(executable: &Executable, cargo: &str, threads: usize) -> TestBinary {
+/// Runs one test binary with a time limit and reads what it printed.
+fn run_tests(executable: &Executable, cargo: &str, limit: Duration, threads: usize) -> TestBinary {
     let threads_arg = threads.to_string();
     let args = [
         "--test-threads",
@@ -423,21 +439,130 @@ fn run_tests(executable: &Executable, cargo: &str, threads: usize) -> TestBinary
         "--format",
         "pretty",
     ];
-    let ran = test_command(executable, cargo, &args)
-        .stdin(Stdio::null())
-        .stderr(Stdio::null())
-        .output();
+    let ran = run_with_limit(&mut test_command(executable, cargo, &args), limit);
     let (stdout, ended) = match ran {
         Err(error) => (String::new(), Ended::NotStarted(error.to_string())),
-        Ok(output) => (
-            String::from_utf8_lossy(&output.stdout).into_owned(),
+        Ok(Ran {
+            stdout,
+            exit: Exit::Status(status),
+        }) => (
+            stdout,
             Ended::Exited {
-                success: output.status.success(),
-                how: describe_status(output.status),
+                success: status.success(),
+                how: describe_status(status),
             },
         ),
+        Ok(Ran {
+            stdout,
+            exit: Exit::TimedOut,
+        }) => {
+            // Which tests there are, in the order libtest starts them.
+            let mut list = test_command(executable, cargo, &["--list", "--format", "terse"]);
+            let listed = match run_with_limit(&mut list, LIST_LIMIT.min(limit)) {
+                Ok(Ran {
+                    stdout,
+                    exit: Exit::Status(status),
+                }) if status.success() => parse_list(&stdout),
+                _ => Vec::new(),
+            };
+            (
+                stdout,
+                Ended::TimedOut {
+                    limit,
+                    listed,
+                    threads,
+                },
+            )
+        }
     };
     test_binary(executable.target.clone(), &stdout, &ended)
+}
+
+/// How a process run by [`run_with_limit`] ended.
+#[derive(Debug)]
+enum Exit {
+    /// By itself.
+    Status(ExitStatus),
+    /// It was still running at the limit, and was killed with every process
+    /// of its process group.
+    TimedOut,
+}
+
+/// What [`run_with_limit`] saw.
+#[derive(Debug)]
+struct Ran {
+    /// Everything the process printed on stdout (until it was killed).
+    stdout: String,
+    /// How it ended.
+    exit: Exit,
+}
+
+/// Runs `command` (stdin empty, stdout captured, stderr discarded) for at
+/// most `limit`. On Unix the process leads a process group of its own, and
+/// at the limit the whole group is killed: the process and anything it
+/// started. Ctrl-C still stops it: raystep's terminal signals are forwarded
+/// to the group (see [`process_group`]).
+fn run_with_limit(command: &mut Command, limit: Duration) -> io::Result<Ran> {
+    command
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null());
+    process_group::prepare(command);
+    let mut child = command.spawn()?;
+    let group = process_group::Group::new(&child);
+
+    let captured = Arc::new(Mutex::new(Vec::new()));
+    let (done, finished_reading) = mpsc::channel();
+    let mut pipe = child.stdout.take().expect("stdout is piped");
+    let sink = Arc::clone(&captured);
+    std::thread::spawn(move || {
+        let mut buffer = [0; 8192];
+        while let Ok(n @ 1..) = pipe.read(&mut buffer) {
+            sink.lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .extend_from_slice(&buffer[..n]);
+        }
+        let _ = done.send(());
+    });
+
+    let exit = wait_with_limit(&mut child, &group, Instant::now() + limit);
+    drop(group);
+    let exit = exit?;
+    // The pipe closes when the last process holding it has ended: at once
+    // after a kill. A process the binary started that outlives it (in
+    // another process group) could hold it open: do not wait for that.
+    let _ = finished_reading.recv_timeout(Duration::from_secs(2));
+    let stdout =
+        String::from_utf8_lossy(&captured.lock().unwrap_or_else(|e| e.into_inner())).into_owned();
+    Ok(Ran { stdout, exit })
+}
+
+/// Waits for `child` until `deadline`, then kills its process group.
+fn wait_with_limit(
+    child: &mut Child,
+    group: &process_group::Group,
+    deadline: Instant,
+) -> io::Result<Exit> {
+    let mut pause = Duration::from_millis(1);
+    loop {
+        match child.try_wait() {
+            Ok(Some(status)) => return Ok(Exit::Status(status)),
+            Ok(None) => {}
+            Err(error) => {
+                group.kill(child);
+                let _ = child.wait();
+                return Err(error);
+            }
+        }
+        let now = Instant::now();
+        if now >= deadline {
+            group.kill(child);
+            child.wait()?;
+            return Ok(Exit::TimedOut);
+        }
+        std::thread::sleep(pause.min(deadline - now));
+        pause = (pause * 2).min(Duration::from_millis(20));
+    }
 }
 
 /// How a process ended, as cargo says it: `exit status: 101`,
@@ -482,6 +607,111 @@ fn describe_signal(signal: i32) -> String {
     format!("signal: {signal}, {name}")
 }
 
+/// Process groups: a test binary and everything it starts can be killed
+/// together, and raystep's own terminal signals (Ctrl-C) reach them although
+/// they are not in the terminal's foreground group.
+#[cfg(unix)]
+mod process_group {
+    use std::os::unix::process::CommandExt;
+    use std::process::{Child, Command};
+    use std::sync::Once;
+    use std::sync::atomic::{AtomicI32, Ordering};
+
+    unsafe extern "C" {
+        fn kill(pid: i32, signal: i32) -> i32;
+        fn signal(signal: i32, handler: usize) -> usize;
+        fn raise(signal: i32) -> i32;
+    }
+    const SIGHUP: i32 = 1;
+    const SIGINT: i32 = 2;
+    const SIGKILL: i32 = 9;
+    const SIGTERM: i32 = 15;
+    const SIG_DFL: usize = 0;
+
+    /// The process group of the test binary running now, 0 if none.
+    static RUNNING: AtomicI32 = AtomicI32::new(0);
+
+    /// Kills the running group, then dies of `sig` as if no handler were installed.
+    extern "C" fn forward(sig: i32) {
+        let group = RUNNING.load(Ordering::SeqCst);
+        // SAFETY: kill, signal and raise are async-signal-safe. The group is
+        // one this process created; its leader is reaped just before
+        // `RUNNING` is cleared.
+        unsafe {
+            if group > 0 {
+                kill(-group, SIGKILL);
+            }
+            signal(sig, SIG_DFL);
+            raise(sig);
+        }
+    }
+
+    /// Makes the process that `command` starts lead a new process group, and
+    /// forwards Ctrl-C, hang-up and termination to such groups from now on.
+    pub fn prepare(command: &mut Command) {
+        static INSTALL: Once = Once::new();
+        INSTALL.call_once(|| {
+            for sig in [SIGHUP, SIGINT, SIGTERM] {
+                // SAFETY: `forward` is an `extern "C" fn(i32)` that only calls
+                // async-signal-safe functions.
+                unsafe {
+                    signal(sig, forward as extern "C" fn(i32) as usize);
+                }
+            }
+        });
+        command.process_group(0);
+    }
+
+    /// The process group of a running child; forgotten when dropped.
+    pub struct Group(i32);
+
+    impl Group {
+        pub fn new(child: &Child) -> Group {
+            let id = i32::try_from(child.id()).unwrap_or(0);
+            RUNNING.store(id, Ordering::SeqCst);
+            Group(id)
+        }
+
+        /// Kills every process in the group (the child is not reaped yet, so
+        /// the group id is still ours).
+        pub fn kill(&self, child: &mut Child) {
+            if self.0 > 0 {
+                // SAFETY: sending a signal has no memory-safety preconditions.
+                unsafe {
+                    kill(-self.0, SIGKILL);
+                }
+            }
+            let _ = child.kill();
+        }
+    }
+
+    impl Drop for Group {
+        fn drop(&mut self) {
+            RUNNING.store(0, Ordering::SeqCst);
+        }
+    }
+}
+
+/// Without process groups, only the test binary itself is killed.
+#[cfg(not(unix))]
+mod process_group {
+    use std::process::{Child, Command};
+
+    pub fn prepare(_command: &mut Command) {}
+
+    pub struct Group;
+
+    impl Group {
+        pub fn new(_child: &Child) -> Group {
+            Group
+        }
+
+        pub fn kill(&self, child: &mut Child) {
+            let _ = child.kill();
+        }
+    }
+}
+
 /// How one test ended.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Outcome {
@@ -509,11 +739,14 @@ pub struct Output {
     pub results: Vec<TestResult>,
     /// It reached its `test result:` line.
     pub finished: bool,
+    /// Tests libtest said were slow: `test x has been running for over 60 seconds`.
+    pub slow: Vec<String>,
 }
 
 /// Reads what one test binary printed on stdout.
 pub fn parse_output(stdout: &str) -> Output {
     let mut results = Vec::new();
+    let mut slow = Vec::new();
     let mut failures: HashMap<&str, String> = HashMap::new();
     let mut finished = false;
     let mut section: Option<(&str, Vec<&str>)> = None;
@@ -537,6 +770,14 @@ pub fn parse_output(stdout: &str) -> Output {
         }
         if let Some((_, text)) = section.as_mut() {
             text.push(line);
+            continue;
+        }
+        if let Some(name) = line
+            .strip_prefix("test ")
+            .and_then(|l| l.split_once(" has been running for over "))
+            .map(|(name, _)| name)
+        {
+            slow.push(name.to_string());
             continue;
         }
         if let Some((name, status)) = line
@@ -563,7 +804,20 @@ pub fn parse_output(stdout: &str) -> Output {
             *message = failures.get(result.name.as_str()).cloned();
         }
     }
-    Output { results, finished }
+    Output {
+        results,
+        finished,
+        slow,
+    }
+}
+
+/// The tests of `binary --list --format terse` (`name: test` lines), in order.
+pub fn parse_list(stdout: &str) -> Vec<String> {
+    stdout
+        .lines()
+        .filter_map(|line| line.strip_suffix(": test"))
+        .map(str::to_string)
+        .collect()
 }
 
 /// The first line of the first panic in a failed test's captured output; for
@@ -629,6 +883,35 @@ pub enum Ended {
     },
     /// It could not be started: why.
     NotStarted(String),
+    /// It was still running at `limit` and was killed.
+    TimedOut {
+        /// The time limit.
+        limit: Duration,
+        /// Its tests in the order libtest starts them (`--list`); empty if unknown.
+        listed: Vec<String>,
+        /// How many tests it ran at once (`--test-threads`).
+        threads: usize,
+    },
+}
+
+/// A test binary that was killed at the time limit.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TimedOut {
+    /// The limit.
+    pub limit: Duration,
+    /// The tests that were running when it was killed, if that is known.
+    pub still_running: Vec<String>,
+}
+
+impl fmt::Display for TimedOut {
+    /// `timed out after 60 s (still running: recursion::facing_mirrors_terminate)`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "timed out after {} s", self.limit.as_secs_f64())?;
+        if !self.still_running.is_empty() {
+            write!(f, " (still running: {})", self.still_running.join(", "))?;
+        }
+        Ok(())
+    }
 }
 
 /// The results of one test binary.
@@ -638,25 +921,79 @@ pub struct TestBinary {
     pub target: Target,
     /// Every test that reported, in the order they reported.
     pub results: Vec<TestResult>,
-    /// `None` if the binary printed its `test result:` line; otherwise why
-    /// it stopped early.
+    /// `None` if the binary printed its `test result:` line (or timed out);
+    /// otherwise why it stopped early.
     pub crashed: Option<String>,
+    /// `Some` if it was killed at the time limit.
+    pub timed_out: Option<TimedOut>,
 }
 
 /// One binary's results from what it printed and how it ended.
 pub fn test_binary(target: Target, stdout: &str, ended: &Ended) -> TestBinary {
     let output = parse_output(stdout);
-    let crashed = match ended {
-        _ if output.finished => None,
-        Ended::Exited { success: true, .. } => Some("the test binary stopped early".to_string()),
-        Ended::Exited { how, .. } => Some(format!("the test binary crashed ({how})")),
-        Ended::NotStarted(why) => Some(format!("the test binary could not be started ({why})")),
+    let (crashed, timed_out) = match ended {
+        Ended::TimedOut {
+            limit,
+            listed,
+            threads,
+        } => (
+            None,
+            Some(TimedOut {
+                limit: *limit,
+                still_running: still_running(&output, listed, *threads),
+            }),
+        ),
+        _ if output.finished => (None, None),
+        Ended::Exited { success: true, .. } => {
+            (Some("the test binary stopped early".to_string()), None)
+        }
+        Ended::Exited { how, .. } => (Some(format!("the test binary crashed ({how})")), None),
+        Ended::NotStarted(why) => (
+            Some(format!("the test binary could not be started ({why})")),
+            None,
+        ),
     };
     TestBinary {
         target,
         results: output.results,
         crashed,
+        timed_out,
     }
+}
+
+/// The tests a killed binary was still running, in the order it started them.
+///
+/// libtest starts its tests in `--list` order, up to `threads` at a time,
+/// and starts the next whenever one ends. So when `done` tests have
+/// reported, the first `done + min(threads, unfinished)` tests of the list
+/// have started, and those among them that did not report are the ones
+/// running. If a test that reported is not among them the order was another
+/// (shuffled): only the tests libtest itself called slow are named then.
+fn still_running(output: &Output, listed: &[String], threads: usize) -> Vec<String> {
+    let reported: HashSet<&str> = output.results.iter().map(|r| r.name.as_str()).collect();
+    let done = listed
+        .iter()
+        .filter(|name| reported.contains(name.as_str()))
+        .count();
+    let started = &listed[..done + threads.max(1).min(listed.len() - done)];
+    let in_order = reported
+        .iter()
+        .all(|name| started.iter().any(|s| s == name));
+    let mut running: Vec<String> = if in_order {
+        started
+            .iter()
+            .filter(|name| !reported.contains(name.as_str()))
+            .cloned()
+            .collect()
+    } else {
+        Vec::new()
+    };
+    for name in &output.slow {
+        if !reported.contains(name.as_str()) && !running.contains(name) {
+            running.push(name.clone());
+        }
+    }
+    running
 }
 
 /// What happened to one exercise.
@@ -668,6 +1005,8 @@ pub enum Verdict {
     Failed(String),
     /// Every failing test stopped at a `todo!()`.
     NotAttempted,
+    /// The exercise's test binary was still running at the time limit.
+    TimedOut(TimedOut),
 }
 
 impl fmt::Display for Verdict {
@@ -676,6 +1015,7 @@ impl fmt::Display for Verdict {
             Verdict::Passed => write!(f, "passed"),
             Verdict::Failed(why) => write!(f, "failed: {why}"),
             Verdict::NotAttempted => write!(f, "not attempted"),
+            Verdict::TimedOut(timed_out) => write!(f, "{timed_out}"),
         }
     }
 }
@@ -688,7 +1028,7 @@ pub struct Report {
     /// Other tests (unit tests, tests of no exercise) that passed.
     pub other_passed: usize,
     /// Other tests that failed, each as `name: why`, and other binaries that
-    /// crashed.
+    /// crashed or timed out.
     pub other_failed: Vec<String>,
 }
 
@@ -769,6 +1109,9 @@ pub fn report(
         if let Some(crash) = &binary.crashed {
             other_failed.push(crash.clone());
         }
+        if let Some(timed_out) = &binary.timed_out {
+            other_failed.push(format!("{}: {timed_out}", binary.target));
+        }
     }
     Report {
         exercises,
@@ -781,6 +1124,10 @@ pub fn report(
 fn verdict(exercise: &str, binaries: &[&TestBinary], source: Option<&str>) -> Verdict {
     if binaries.is_empty() {
         return Verdict::Failed(format!("no tests ran (expected tests/{exercise}.rs)"));
+    }
+    // Killed before it could finish: what did report says too little.
+    if let Some(timed_out) = binaries.iter().find_map(|b| b.timed_out.as_ref()) {
+        return Verdict::TimedOut(timed_out.clone());
     }
     let position = |name: &str| {
         let short = name.rsplit("::").next().unwrap_or(name);
@@ -1192,11 +1539,16 @@ mod tests {
     #[test]
     fn each_binarys_output_is_read() {
         let binaries = student();
-        assert!(binaries.iter().all(|b| b.crashed.is_none()));
+        assert!(
+            binaries
+                .iter()
+                .all(|b| b.crashed.is_none() && b.timed_out.is_none())
+        );
         let counts: Vec<usize> = binaries.iter().map(|b| b.results.len()).collect();
         assert_eq!(counts, [1, 2, 1, 3]);
         let output = parse_output(&split(include_str!("../testdata/student.stdout"))[1]);
         assert!(output.finished);
+        assert!(output.slow.is_empty());
     }
 
     #[test]
@@ -1415,6 +1767,136 @@ mod tests {
         );
     }
 
+    /// `recursion.rs` of a chapter, killed while `facing_mirrors_terminate` loops.
+    const KILLED: &str = "\nrunning 4 tests\n\
+        test a_mirror_reflects ... ok\n\
+        test depth_is_limited ... FAILED\n";
+
+    fn listed() -> Vec<String> {
+        exercises(&[
+            "a_mirror_reflects",
+            "depth_is_limited",
+            "facing_mirrors_terminate",
+            "weights_shrink",
+        ])
+    }
+
+    fn timed_out(threads: usize, listed: Vec<String>) -> Ended {
+        Ended::TimedOut {
+            limit: Duration::from_secs(60),
+            listed,
+            threads,
+        }
+    }
+
+    #[test]
+    fn a_timed_out_exercise_names_its_unfinished_tests() {
+        let binaries = [
+            test_binary(
+                Target::Unit("src/lib.rs".into()),
+                "\nrunning 0 tests\n\ntest result: ok. 0 passed\n",
+                &Ended::Exited {
+                    success: true,
+                    how: "exit status: 0".into(),
+                },
+            ),
+            test_binary(
+                Target::Test("recursion".into()),
+                KILLED,
+                &timed_out(1, listed()),
+            ),
+        ];
+        assert_eq!(binaries[1].crashed, None);
+        let report = report(&exercises(&["recursion"]), &binaries, &HashMap::new());
+        assert_eq!(
+            report.exercises[0].1,
+            Verdict::TimedOut(TimedOut {
+                limit: Duration::from_secs(60),
+                still_running: exercises(&["facing_mirrors_terminate"]),
+            })
+        );
+        assert_eq!(
+            report.to_string(),
+            "  recursion    timed out after 60 s (still running: facing_mirrors_terminate)\n\
+             \x20 other tests  0 passed, 0 failed\n\
+             0 of 1 exercises passed\n"
+        );
+        assert!(!report.all_passed());
+    }
+
+    #[test]
+    fn running_tests_follow_the_list_order_and_the_thread_count() {
+        let running = |ended: &Ended| {
+            test_binary(Target::Test("recursion".into()), KILLED, ended)
+                .timed_out
+                .unwrap()
+                .still_running
+        };
+        // Two threads: both tests after the two that reported had started.
+        assert_eq!(
+            running(&timed_out(2, listed())),
+            ["facing_mirrors_terminate", "weights_shrink"]
+        );
+        assert_eq!(
+            running(&timed_out(8, listed())),
+            ["facing_mirrors_terminate", "weights_shrink"]
+        );
+        // A test that reported but would not have started yet: another order.
+        let shuffled = exercises(&[
+            "facing_mirrors_terminate",
+            "weights_shrink",
+            "a_mirror_reflects",
+            "depth_is_limited",
+        ]);
+        assert!(running(&timed_out(1, shuffled)).is_empty());
+        // No list: nothing to say.
+        assert!(running(&timed_out(1, Vec::new())).is_empty());
+        // Unless libtest itself said which test was slow.
+        let warned = format!("{KILLED}test weights_shrink has been running for over 60 seconds\n");
+        let binary = test_binary(Target::Test("r".into()), &warned, &timed_out(1, Vec::new()));
+        assert_eq!(
+            binary.timed_out.unwrap().to_string(),
+            "timed out after 60 s (still running: weights_shrink)"
+        );
+    }
+
+    #[test]
+    fn a_timed_out_other_binary_is_an_other_failure() {
+        let ended = Ended::TimedOut {
+            limit: Duration::from_millis(2500),
+            listed: exercises(&["tests::spins"]),
+            threads: 4,
+        };
+        let binaries = [test_binary(
+            Target::Unit("src/lib.rs".into()),
+            "\nrunning 1 test\n",
+            &ended,
+        )];
+        let report = report(&[], &binaries, &HashMap::new());
+        assert_eq!(
+            report.other_failed,
+            ["unittests src/lib.rs: timed out after 2.5 s (still running: tests::spins)"]
+        );
+        assert!(!report.all_passed());
+        // Without a list or a warning the message names no test.
+        let unknown = Ended::TimedOut {
+            limit: Duration::from_secs(3),
+            listed: Vec::new(),
+            threads: 4,
+        };
+        let binary = test_binary(Target::Test("x".into()), "", &unknown);
+        assert_eq!(binary.timed_out.unwrap().to_string(), "timed out after 3 s");
+    }
+
+    #[test]
+    fn listed_tests_are_read() {
+        assert_eq!(
+            parse_list("a::b: test\nc: test\nbench_it: bench\n"),
+            ["a::b", "c"]
+        );
+        assert!(parse_list("").is_empty());
+    }
+
     #[test]
     fn nested_test_folders_are_named_by_folder() {
         assert_eq!(test_stem("tests/line.rs"), "line");
@@ -1430,11 +1912,54 @@ mod tests {
 
     #[cfg(unix)]
     #[test]
+    fn a_process_past_its_limit_is_killed() {
+        let ran =
+            run_with_limit(Command::new("sleep").arg("30"), Duration::from_millis(300)).unwrap();
+        assert!(matches!(ran.exit, Exit::TimedOut), "{ran:?}");
+    }
+
+    /// The processes a test binary started die with it.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn a_killed_process_takes_its_children_along() {
+        let ran = run_with_limit(
+            &mut shell("sleep 30 & echo $!; wait"),
+            Duration::from_millis(300),
+        )
+        .unwrap();
+        assert!(matches!(ran.exit, Exit::TimedOut), "{ran:?}");
+        let sleep: u32 = ran.stdout.trim().parse().expect("the child's pid");
+        // Dead (or a zombie nobody has reaped yet); SIGKILL is delivered at once,
+        // give the kernel a moment all the same.
+        let dead = || {
+            std::fs::read_to_string(format!("/proc/{sleep}/stat")).map_or(true, |stat| {
+                stat.rsplit_once(") ")
+                    .is_some_and(|(_, s)| s.starts_with('Z'))
+            })
+        };
+        let until = Instant::now() + Duration::from_secs(5);
+        while !dead() && Instant::now() < until {
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        assert!(dead(), "sleep {sleep} outlived the kill");
+    }
+
+    #[cfg(unix)]
+    #[test]
     fn how_a_process_ended_is_said_as_cargo_says_it() {
-        let status = |script: &str| shell(script).output().unwrap().status;
-        assert_eq!(describe_status(status("exit 3")), "exit status: 3");
+        let ran =
+            run_with_limit(&mut shell("echo partial; exit 3"), Duration::from_secs(30)).unwrap();
+        assert_eq!(ran.stdout, "partial\n");
+        let Exit::Status(status) = ran.exit else {
+            panic!("{ran:?}")
+        };
+        assert_eq!(describe_status(status), "exit status: 3");
+        let ran = run_with_limit(&mut shell("kill -ABRT $$"), Duration::from_secs(30)).unwrap();
+        let Exit::Status(status) = ran.exit else {
+            panic!("{ran:?}")
+        };
         assert_eq!(
-            describe_status(status("kill -ABRT $$")),
+            describe_status(status),
             "signal: 6, SIGABRT: process abort signal"
         );
         assert_eq!(describe_signal(64), "signal: 64");
