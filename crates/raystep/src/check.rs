@@ -1,18 +1,33 @@
 //! `raystep check chNN`: run a chapter's tests in student mode and say, for
-//! each exercise, whether it passes, fails (and where first), or is still the
-//! untouched stub.
+//! each exercise, whether it passes, fails (and where first), times out, or
+//! is still the untouched stub.
 //!
-//! Cargo's output is read, not its exit code alone: cargo names each test
-//! binary on stderr (`Running tests/line_through_points.rs (…)`) in the same
-//! order as the binaries print their `running N tests` blocks on stdout, so
-//! pairing the two tells which results belong to which exercise. The parsing
-//! is a pure function over the captured text ([`parse`], [`report`]).
+//! Two steps, so that the verdicts do not depend on the user's cargo settings
+//! (`term.quiet`, `term.verbose`, colours) and no test can hang the terminal:
+//!
+//! 1. **Build** with `cargo test --no-run --message-format=json-render-diagnostics`
+//!    and cargo's terminal settings pinned in its environment. Cargo names
+//!    every test executable it built, and the target it belongs to, in the
+//!    `compiler-artifact` JSON messages on its stdout ([`test_executables`]);
+//!    compiler errors are rendered on its stderr as usual ([`cargo_failure`]).
+//! 2. **Run** each test binary ourselves, in a fixed order (the library's unit
+//!    tests, the binaries' unit tests, then `tests/*.rs` by name), in the
+//!    package folder with the environment cargo would give it, explicit
+//!    libtest arguments and a time limit. A binary still running at the limit
+//!    is killed with every process it started.
+//!
+//! Doc tests are not run: the chapters have none.
+//!
+//! The parsing is pure functions over captured text ([`test_executables`],
+//! [`parse_output`], [`test_binary`], [`report`]).
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::fmt;
-use std::io::{BufRead, BufReader, Read};
+use std::io::{self, BufRead, BufReader, Read};
 use std::path::{Path, PathBuf};
-use std::process::{Command, ExitCode, Stdio};
+use std::process::{Child, Command, ExitCode, ExitStatus, Stdio};
+use std::sync::{Arc, Mutex, mpsc};
+use std::time::{Duration, Instant};
 
 use crate::{Error, workspace};
 
@@ -27,10 +42,22 @@ pub struct Options {
     pub target_dir: Option<PathBuf>,
     /// Do not echo cargo's build progress.
     pub quiet: bool,
+    /// How long one test binary may run before it is killed.
+    pub timeout: Duration,
 }
+
+/// The default of `--timeout`, in seconds. The slowest test binaries of the
+/// reference solutions (chapter 07's unit tests and `tests/agreement.rs`, a
+/// debug build) take under a second on two cores; a minute leaves a wide
+/// margin for a slow machine and a slow but correct student solution, and
+/// still ends an endless loop in reasonable time.
+pub const DEFAULT_TIMEOUT_SECS: u64 = 60;
 
 /// The panic message of `todo!()`: a test that stops here has not been attempted.
 const TODO: &str = "not yet implemented";
+
+/// How long `--list` may take after a binary timed out (to name its unfinished tests).
+const LIST_LIMIT: Duration = Duration::from_secs(10);
 
 /// Runs `raystep check`.
 pub fn run(options: &Options) -> Result<ExitCode, Error> {
@@ -57,16 +84,27 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
             chapter.package
         );
     }
-    let output = run_cargo(&root, &chapter.package, options)?;
+    let cargo = cargo_program();
+    let built = build(&cargo, &root, &chapter.package, options)?;
 
     println!("{} ({mode})", chapter.package);
-    let binaries = match parse(&output.stdout, &output.stderr) {
-        Ok(binaries) => binaries,
+    let executables = match built {
+        Ok(executables) => executables,
         Err(failure) => {
             println!("  {failure}");
             return Ok(ExitCode::FAILURE);
         }
     };
+    let threads = test_threads();
+    let binaries: Vec<TestBinary> = executables
+        .iter()
+        .map(|executable| {
+            if !options.quiet {
+                eprintln!("     Running {}", executable.target);
+            }
+            run_tests(executable, &cargo, options.timeout, threads)
+        })
+        .collect();
     let report = report(&exercises, &binaries, &sources);
     print!("{report}");
     Ok(if report.all_passed() {
@@ -76,51 +114,60 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     })
 }
 
-/// Cargo's captured output.
-struct Captured {
-    stdout: String,
-    stderr: String,
+/// The cargo that runs raystep (`cargo run` sets `CARGO`), else `cargo` on the path.
+fn cargo_program() -> String {
+    std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_string())
 }
 
-/// `cargo test -p <package> [--features exercise] --no-fail-fast` in the workspace root.
-fn run_cargo(root: &Path, package: &str, options: &Options) -> Result<Captured, Error> {
-    let program = std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_string());
-    let mut command = Command::new(&program);
-    command
-        .current_dir(root)
-        .args(["test", "--color", "never", "-p", package]);
+/// `cargo test --no-run -p <package> [--features exercise]` in the workspace
+/// root: the test executables it built, or why it built none.
+fn build(
+    cargo: &str,
+    root: &Path,
+    package: &str,
+    options: &Options,
+) -> Result<Result<Vec<Executable>, CargoFailure>, Error> {
+    let mut command = Command::new(cargo);
+    command.current_dir(root).args([
+        "test",
+        "--no-run",
+        "--message-format=json-render-diagnostics",
+        "--color",
+        "never",
+        "-p",
+        package,
+    ]);
     if !options.reference {
         command.args(["--features", "exercise"]);
     }
     command
-        .arg("--no-fail-fast")
-        // Short panic reports; no snapshot files written while checking.
-        .env("RUST_BACKTRACE", "0")
-        .env_remove("INSTA_FORCE_PASS")
+        // Environment variables override cargo's config files: whatever the
+        // user's `term` settings, cargo prints its usual progress (no
+        // `Running `rustc …`` lines), uncoloured, without a progress bar.
+        .env("CARGO_TERM_QUIET", "false")
+        .env("CARGO_TERM_VERBOSE", "false")
+        .env("CARGO_TERM_COLOR", "never")
+        .env("CARGO_TERM_PROGRESS_WHEN", "never")
+        .env("CARGO_TERM_HYPERLINKS", "false")
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped());
-    if std::env::var_os("INSTA_UPDATE").is_none() {
-        command.env("INSTA_UPDATE", "no");
-    }
     if let Some(dir) = &options.target_dir {
         command.env("CARGO_TARGET_DIR", dir);
     }
     let spawn_error = |source| Error::Spawn {
-        program: program.clone(),
+        program: cargo.to_string(),
         source,
     };
     let mut child = command.spawn().map_err(spawn_error)?;
 
-    // Echo the build progress (not the test runs) while collecting stderr.
+    // Echo the build progress and the compiler's messages while collecting them.
     let stderr = child.stderr.take().expect("stderr is piped");
     let quiet = options.quiet;
     let echo = std::thread::spawn(move || {
         let mut text = String::new();
-        let mut building = true;
         for line in BufReader::new(stderr).lines().map_while(Result::ok) {
-            building &= !is_test_run_line(&line);
-            if building && !quiet {
+            if !quiet {
                 eprintln!("{line}");
             }
             text.push_str(&line);
@@ -132,121 +179,131 @@ fn run_cargo(root: &Path, package: &str, options: &Options) -> Result<Captured, 
     let mut pipe = child.stdout.take().expect("stdout is piped");
     let read = pipe.read_to_string(&mut stdout);
     let stderr = echo.join().unwrap_or_default();
-    child.wait().map_err(spawn_error)?;
+    let status = child.wait().map_err(spawn_error)?;
     read.map_err(spawn_error)?;
-    Ok(Captured { stdout, stderr })
-}
-
-/// Cargo's "the build is done, tests start" lines.
-fn is_test_run_line(line: &str) -> bool {
-    let line = line.trim_start();
-    line.starts_with("Finished ") || line.starts_with("Running ") || line.starts_with("Doc-tests ")
+    if !status.success() {
+        return Ok(Err(cargo_failure(&stderr)));
+    }
+    let executables = test_executables(&stdout);
+    if executables.is_empty() {
+        return Ok(Err(CargoFailure::Cargo(
+            "cargo built no test binaries".to_string(),
+        )));
+    }
+    Ok(Ok(executables))
 }
 
 /// Which target a test binary was built from.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Target {
-    /// `unittests src/lib.rs` or a binary's unit tests.
+    /// The unit tests of the library or of a binary, by source path in the
+    /// package: `src/lib.rs`, `src/bin/ch01-figures.rs`.
     Unit(String),
     /// An integration test, by file stem: `tests/line_through_points.rs` → `line_through_points`.
     Test(String),
-    /// The doc tests.
-    Doc,
 }
 
-/// How one test ended.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Outcome {
-    /// `ok`.
-    Passed,
-    /// `ignored`.
-    Ignored,
-    /// `FAILED`, with the first line of the panic message if one was printed.
-    Failed(Option<String>),
-}
-
-/// One test and how it ended.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct TestResult {
-    /// As libtest prints it: `tests::offsets_are_signed`.
-    pub name: String,
-    /// How it ended.
-    pub outcome: Outcome,
-}
-
-/// The results of one test binary.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct TestBinary {
-    /// Which target it was built from.
-    pub target: Target,
-    /// Every test that reported, in the order they reported.
-    pub results: Vec<TestResult>,
-    /// `None` if the binary printed its `test result:` line; otherwise why it
-    /// stopped early (cargo's "process didn't exit successfully" line).
-    pub crashed: Option<String>,
-}
-
-/// Cargo ran no tests at all.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum CargoFailure {
-    /// The chapter (or its tests) do not compile: the first compiler error.
-    DoesNotCompile(String),
-    /// Cargo stopped for another reason: its first error line.
-    Cargo(String),
-}
-
-impl fmt::Display for CargoFailure {
+impl fmt::Display for Target {
+    /// As cargo names it when it runs one: `unittests src/lib.rs`, `tests/line.rs`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            CargoFailure::DoesNotCompile(error) => write!(f, "the tests do not compile: {error}"),
-            CargoFailure::Cargo(error) => write!(f, "cargo failed: {error}"),
+            Target::Unit(source) => write!(f, "unittests {source}"),
+            Target::Test(stem) => write!(f, "tests/{stem}.rs"),
         }
     }
 }
 
-/// Reads `cargo test --no-fail-fast` output: its stdout (what the test
-/// binaries print) and its stderr (cargo's progress, naming each binary).
-pub fn parse(stdout: &str, stderr: &str) -> Result<Vec<TestBinary>, CargoFailure> {
-    let targets = targets(stderr);
-    if targets.is_empty() {
-        return Err(cargo_failure(stderr));
-    }
-    let blocks = blocks(stdout);
-    Ok(targets
-        .into_iter()
-        .zip(blocks)
-        .map(|((target, crash), block)| {
-            let (results, finished) = parse_block(block);
-            TestBinary {
-                target,
-                results,
-                crashed: (!finished)
-                    .then(|| crash.unwrap_or_else(|| "the test binary stopped early".to_string())),
-            }
-        })
-        .collect())
+/// A test executable cargo built.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Executable {
+    /// Which target it was built from.
+    pub target: Target,
+    /// The executable.
+    pub path: PathBuf,
+    /// Its package's `Cargo.toml`.
+    pub manifest_path: PathBuf,
 }
 
-/// The test binaries cargo ran, in order, each with the reason it crashed if cargo gave one.
-fn targets(stderr: &str) -> Vec<(Target, Option<String>)> {
-    let mut targets: Vec<(Target, Option<String>)> = Vec::new();
-    for line in stderr.lines().map(str::trim) {
-        if let Some(rest) = line.strip_prefix("Running ") {
-            let source = rest.split(" (").next().unwrap_or(rest);
-            let target = match source.strip_prefix("unittests ") {
-                Some(path) => Target::Unit(path.to_string()),
-                None => Target::Test(test_stem(source)),
-            };
-            targets.push((target, None));
-        } else if line.starts_with("Doc-tests ") {
-            targets.push((Target::Doc, None));
-        } else if let Some(why) = exit_reason(line) {
-            if let Some((_, crash @ None)) = targets.last_mut() {
-                *crash = Some(format!("the test binary crashed ({why})"));
-            }
+impl Executable {
+    /// The package folder: where cargo runs a test binary, its `CARGO_MANIFEST_DIR`.
+    pub fn package_dir(&self) -> &Path {
+        self.manifest_path.parent().unwrap_or(Path::new("."))
+    }
+}
+
+/// The test executables named in the JSON messages of `cargo test --no-run
+/// --message-format=json…` (one per line on its stdout), in the order
+/// `raystep check` runs them: the library's unit tests, the binaries' unit
+/// tests by name, the integration tests by name, anything else last.
+///
+/// A test executable is a `compiler-artifact` built with the test profile
+/// (`"profile": {"test": true}`) that has an `executable`; the other
+/// artifacts are the dependencies and the plain library and binaries.
+pub fn test_executables(messages: &str) -> Vec<Executable> {
+    let mut found: Vec<(u8, String, Executable)> = Vec::new();
+    for line in messages.lines() {
+        let Some(message) = json::parse(line) else {
+            continue;
+        };
+        if message.get("reason").and_then(json::Value::as_str) != Some("compiler-artifact")
+            || message.get("profile").and_then(|p| p.get("test")) != Some(&json::Value::Bool(true))
+        {
+            continue;
+        }
+        let (Some(path), Some(manifest_path), Some(target)) = (
+            message.get("executable").and_then(json::Value::as_str),
+            message.get("manifest_path").and_then(json::Value::as_str),
+            message.get("target"),
+        ) else {
+            continue;
+        };
+        let kinds: Vec<&str> = target
+            .get("kind")
+            .and_then(json::Value::as_array)
+            .unwrap_or_default()
+            .iter()
+            .filter_map(json::Value::as_str)
+            .collect();
+        let name = target
+            .get("name")
+            .and_then(json::Value::as_str)
+            .unwrap_or("");
+        let source = target
+            .get("src_path")
+            .and_then(json::Value::as_str)
+            .unwrap_or(name);
+        let manifest_path = PathBuf::from(manifest_path);
+        let package_dir = manifest_path.parent().unwrap_or(Path::new(""));
+        let relative = Path::new(source)
+            .strip_prefix(package_dir)
+            .unwrap_or(Path::new(source));
+        let relative = relative.to_string_lossy().replace('\\', "/");
+        let (rank, target) = if kinds.contains(&"test") {
+            (2, Target::Test(test_stem(&relative)))
+        } else if kinds.contains(&"bin") {
+            (1, Target::Unit(relative))
+        } else if kinds.contains(&"bench") || kinds.contains(&"example") {
+            (3, Target::Unit(relative))
+        } else {
+            (0, Target::Unit(relative))
+        };
+        let path = PathBuf::from(path);
+        if found.iter().all(|(_, _, e)| e.path != path) {
+            found.push((
+                rank,
+                name.to_string(),
+                Executable {
+                    target,
+                    path,
+                    manifest_path,
+                },
+            ));
         }
     }
-    targets
+    found.sort_by(|(rank_a, name_a, _), (rank_b, name_b, _)| {
+        (rank_a, name_a).cmp(&(rank_b, name_b))
+    });
+    found.into_iter().map(|(_, _, e)| e).collect()
 }
 
 /// `tests/line.rs` → `line`; `tests/line/main.rs` → `line`.
@@ -265,8 +322,27 @@ fn test_stem(source: &str) -> String {
     stem.to_string()
 }
 
-/// Why cargo ran nothing: the first compiler error (with its location), or cargo's first error.
-fn cargo_failure(stderr: &str) -> CargoFailure {
+/// Cargo built nothing to run.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum CargoFailure {
+    /// The chapter (or its tests) do not compile: the first compiler error.
+    DoesNotCompile(String),
+    /// Cargo stopped for another reason: its first error line.
+    Cargo(String),
+}
+
+impl fmt::Display for CargoFailure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CargoFailure::DoesNotCompile(error) => write!(f, "the tests do not compile: {error}"),
+            CargoFailure::Cargo(error) => write!(f, "cargo failed: {error}"),
+        }
+    }
+}
+
+/// Why a failed build built nothing, from cargo's stderr: the first compiler
+/// error (with its location), or cargo's first error.
+pub fn cargo_failure(stderr: &str) -> CargoFailure {
     let lines: Vec<&str> = stderr.lines().collect();
     let first_error = lines.iter().position(|l| l.starts_with("error"));
     let compile_failed = lines
@@ -295,9 +371,9 @@ fn cargo_failure(stderr: &str) -> CargoFailure {
     }
 }
 
-/// How a process that cargo ran (a test binary, the compiler) ended, from
-/// cargo's "process didn't exit successfully: `…` (signal: 7, SIGBUS: …)":
-/// the text in the last brackets.
+/// How a process that cargo ran (the compiler) ended, from cargo's "process
+/// didn't exit successfully: `…` (signal: 7, SIGBUS: …)": the text in the
+/// last brackets.
 fn exit_reason(line: &str) -> Option<&str> {
     let why = line
         .trim()
@@ -308,36 +384,373 @@ fn exit_reason(line: &str) -> Option<&str> {
     )
 }
 
-/// Splits the binaries' stdout at each `running N tests` line.
-fn blocks(stdout: &str) -> Vec<Vec<&str>> {
-    let mut blocks: Vec<Vec<&str>> = Vec::new();
-    for line in stdout.lines() {
-        if is_running_line(line) {
-            blocks.push(Vec::new());
-        } else if let Some(block) = blocks.last_mut() {
-            block.push(line);
+/// How many tests a binary runs at once: `RUST_TEST_THREADS` if the user set
+/// it, else one per core (libtest's own default). Passed explicitly, so that
+/// [`still_running`] knows it.
+fn test_threads() -> usize {
+    std::env::var("RUST_TEST_THREADS")
+        .ok()
+        .and_then(|n| n.trim().parse().ok())
+        .filter(|&n: &usize| n > 0)
+        .or_else(|| std::thread::available_parallelism().ok().map(|n| n.get()))
+        .unwrap_or(1)
+}
+
+/// The command for one test binary, as cargo would run it: in the package
+/// folder, with the variables cargo sets that a test may read, and nothing
+/// from the user's environment that changes what libtest or insta print or
+/// that makes a failing test pass.
+fn test_command(executable: &Executable, cargo: &str, args: &[&str]) -> Command {
+    let mut command = Command::new(&executable.path);
+    command
+        .args(args)
+        .current_dir(executable.package_dir())
+        .env("CARGO", cargo)
+        .env("CARGO_MANIFEST_DIR", executable.package_dir())
+        .env("CARGO_MANIFEST_PATH", &executable.manifest_path)
+        // Short panic reports.
+        .env("RUST_BACKTRACE", "0")
+        // Output captured and printed per failing test, tests in libtest's
+        // order (the threads are passed as an argument).
+        .env_remove("RUST_TEST_NOCAPTURE")
+        .env_remove("RUST_TEST_THREADS")
+        .env_remove("RUST_TEST_SHUFFLE")
+        .env_remove("RUST_TEST_SHUFFLE_SEED")
+        // Snapshot diffs in full and uncoloured; no snapshot or reference
+        // image accepted or written while checking.
+        .env("INSTA_OUTPUT", "diff")
+        .env_remove("INSTA_FORCE_PASS")
+        .env_remove("CLICOLOR_FORCE")
+        .env_remove("RAYSTEP_BLESS");
+    if std::env::var_os("INSTA_UPDATE").is_none() {
+        command.env("INSTA_UPDATE", "no");
+    }
+    command
+}
+
+/// Runs one test binary with a time limit and reads what it printed.
+fn run_tests(executable: &Executable, cargo: &str, limit: Duration, threads: usize) -> TestBinary {
+    let threads_arg = threads.to_string();
+    let args = [
+        "--test-threads",
+        threads_arg.as_str(),
+        "--color",
+        "never",
+        "--format",
+        "pretty",
+    ];
+    let ran = run_with_limit(&mut test_command(executable, cargo, &args), limit);
+    let (stdout, ended) = match ran {
+        Err(error) => (String::new(), Ended::NotStarted(error.to_string())),
+        Ok(Ran {
+            stdout,
+            exit: Exit::Status(status),
+        }) => (
+            stdout,
+            Ended::Exited {
+                success: status.success(),
+                how: describe_status(status),
+            },
+        ),
+        Ok(Ran {
+            stdout,
+            exit: Exit::TimedOut,
+        }) => {
+            // Which tests there are, in the order libtest starts them.
+            let mut list = test_command(executable, cargo, &["--list", "--format", "terse"]);
+            let listed = match run_with_limit(&mut list, LIST_LIMIT.min(limit)) {
+                Ok(Ran {
+                    stdout,
+                    exit: Exit::Status(status),
+                }) if status.success() => parse_list(&stdout),
+                _ => Vec::new(),
+            };
+            (
+                stdout,
+                Ended::TimedOut {
+                    limit,
+                    listed,
+                    threads,
+                },
+            )
+        }
+    };
+    test_binary(executable.target.clone(), &stdout, &ended)
+}
+
+/// How a process run by [`run_with_limit`] ended.
+#[derive(Debug)]
+enum Exit {
+    /// By itself.
+    Status(ExitStatus),
+    /// It was still running at the limit, and was killed with every process
+    /// of its process group.
+    TimedOut,
+}
+
+/// What [`run_with_limit`] saw.
+#[derive(Debug)]
+struct Ran {
+    /// Everything the process printed on stdout (until it was killed).
+    stdout: String,
+    /// How it ended.
+    exit: Exit,
+}
+
+/// Runs `command` (stdin empty, stdout captured, stderr discarded) for at
+/// most `limit`. On Unix the process leads a process group of its own, and
+/// at the limit the whole group is killed: the process and anything it
+/// started. Ctrl-C still stops it: raystep's terminal signals are forwarded
+/// to the group (see [`process_group`]).
+fn run_with_limit(command: &mut Command, limit: Duration) -> io::Result<Ran> {
+    command
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null());
+    process_group::prepare(command);
+    let mut child = command.spawn()?;
+    let group = process_group::Group::new(&child);
+
+    let captured = Arc::new(Mutex::new(Vec::new()));
+    let (done, finished_reading) = mpsc::channel();
+    let mut pipe = child.stdout.take().expect("stdout is piped");
+    let sink = Arc::clone(&captured);
+    std::thread::spawn(move || {
+        let mut buffer = [0; 8192];
+        while let Ok(n @ 1..) = pipe.read(&mut buffer) {
+            sink.lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .extend_from_slice(&buffer[..n]);
+        }
+        let _ = done.send(());
+    });
+
+    let exit = wait_with_limit(&mut child, &group, Instant::now() + limit);
+    drop(group);
+    let exit = exit?;
+    // The pipe closes when the last process holding it has ended: at once
+    // after a kill. A process the binary started that outlives it (in
+    // another process group) could hold it open: do not wait for that.
+    let _ = finished_reading.recv_timeout(Duration::from_secs(2));
+    let stdout =
+        String::from_utf8_lossy(&captured.lock().unwrap_or_else(|e| e.into_inner())).into_owned();
+    Ok(Ran { stdout, exit })
+}
+
+/// Waits for `child` until `deadline`, then kills its process group.
+fn wait_with_limit(
+    child: &mut Child,
+    group: &process_group::Group,
+    deadline: Instant,
+) -> io::Result<Exit> {
+    let mut pause = Duration::from_millis(1);
+    loop {
+        match child.try_wait() {
+            Ok(Some(status)) => return Ok(Exit::Status(status)),
+            Ok(None) => {}
+            Err(error) => {
+                group.kill(child);
+                let _ = child.wait();
+                return Err(error);
+            }
+        }
+        let now = Instant::now();
+        if now >= deadline {
+            group.kill(child);
+            child.wait()?;
+            return Ok(Exit::TimedOut);
+        }
+        std::thread::sleep(pause.min(deadline - now));
+        pause = (pause * 2).min(Duration::from_millis(20));
+    }
+}
+
+/// How a process ended, as cargo says it: `exit status: 101`,
+/// `signal: 6, SIGABRT: process abort signal`.
+fn describe_status(status: ExitStatus) -> String {
+    #[cfg(unix)]
+    {
+        use std::os::unix::process::ExitStatusExt;
+        if let Some(signal) = status.signal() {
+            return describe_signal(signal);
         }
     }
-    blocks
+    status.to_string()
 }
 
-/// `running 1 test`, `running 12 tests`.
-fn is_running_line(line: &str) -> bool {
-    line.strip_prefix("running ")
-        .and_then(|rest| {
-            rest.strip_suffix(" tests")
-                .or_else(|| rest.strip_suffix(" test"))
-        })
-        .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
+/// `signal: 6, SIGABRT: process abort signal`, with cargo's names.
+#[cfg(unix)]
+fn describe_signal(signal: i32) -> String {
+    let name = match signal {
+        1 => "SIGHUP: hangup",
+        2 => "SIGINT: terminal interrupt signal",
+        3 => "SIGQUIT: terminal quit signal",
+        4 => "SIGILL: illegal instruction",
+        5 => "SIGTRAP: trace/breakpoint trap",
+        6 => "SIGABRT: process abort signal",
+        8 => "SIGFPE: erroneous arithmetic operation",
+        9 => "SIGKILL: kill",
+        11 => "SIGSEGV: invalid memory reference",
+        13 => "SIGPIPE: write on a pipe with no one to read",
+        14 => "SIGALRM: alarm clock",
+        15 => "SIGTERM: termination signal",
+        #[cfg(any(target_os = "linux", target_os = "android"))]
+        7 => "SIGBUS: access to undefined memory",
+        #[cfg(any(target_os = "linux", target_os = "android"))]
+        31 => "SIGSYS: bad system call",
+        #[cfg(not(any(target_os = "linux", target_os = "android")))]
+        10 => "SIGBUS: access to undefined memory",
+        #[cfg(not(any(target_os = "linux", target_os = "android")))]
+        12 => "SIGSYS: bad system call",
+        _ => return format!("signal: {signal}"),
+    };
+    format!("signal: {signal}, {name}")
 }
 
-/// One binary's results, and whether it reached its `test result:` line.
-fn parse_block(block: Vec<&str>) -> (Vec<TestResult>, bool) {
+/// Process groups: a test binary and everything it starts can be killed
+/// together, and raystep's own terminal signals (Ctrl-C) reach them although
+/// they are not in the terminal's foreground group.
+#[cfg(unix)]
+mod process_group {
+    use std::os::unix::process::CommandExt;
+    use std::process::{Child, Command};
+    use std::sync::Once;
+    use std::sync::atomic::{AtomicI32, Ordering};
+
+    unsafe extern "C" {
+        fn kill(pid: i32, signal: i32) -> i32;
+        fn signal(signal: i32, handler: usize) -> usize;
+        fn raise(signal: i32) -> i32;
+    }
+    const SIGHUP: i32 = 1;
+    const SIGINT: i32 = 2;
+    const SIGKILL: i32 = 9;
+    const SIGTERM: i32 = 15;
+    const SIG_DFL: usize = 0;
+
+    /// The process group of the test binary running now, 0 if none.
+    static RUNNING: AtomicI32 = AtomicI32::new(0);
+
+    /// Kills the running group, then dies of `sig` as if no handler were installed.
+    extern "C" fn forward(sig: i32) {
+        let group = RUNNING.load(Ordering::SeqCst);
+        // SAFETY: kill, signal and raise are async-signal-safe. The group is
+        // one this process created; its leader is reaped just before
+        // `RUNNING` is cleared.
+        unsafe {
+            if group > 0 {
+                kill(-group, SIGKILL);
+            }
+            signal(sig, SIG_DFL);
+            raise(sig);
+        }
+    }
+
+    /// Makes the process that `command` starts lead a new process group, and
+    /// forwards Ctrl-C, hang-up and termination to such groups from now on.
+    pub fn prepare(command: &mut Command) {
+        static INSTALL: Once = Once::new();
+        INSTALL.call_once(|| {
+            for sig in [SIGHUP, SIGINT, SIGTERM] {
+                // SAFETY: `forward` is an `extern "C" fn(i32)` that only calls
+                // async-signal-safe functions.
+                unsafe {
+                    signal(sig, forward as extern "C" fn(i32) as usize);
+                }
+            }
+        });
+        command.process_group(0);
+    }
+
+    /// The process group of a running child; forgotten when dropped.
+    pub struct Group(i32);
+
+    impl Group {
+        pub fn new(child: &Child) -> Group {
+            let id = i32::try_from(child.id()).unwrap_or(0);
+            RUNNING.store(id, Ordering::SeqCst);
+            Group(id)
+        }
+
+        /// Kills every process in the group (the child is not reaped yet, so
+        /// the group id is still ours).
+        pub fn kill(&self, child: &mut Child) {
+            if self.0 > 0 {
+                // SAFETY: sending a signal has no memory-safety preconditions.
+                unsafe {
+                    kill(-self.0, SIGKILL);
+                }
+            }
+            let _ = child.kill();
+        }
+    }
+
+    impl Drop for Group {
+        fn drop(&mut self) {
+            RUNNING.store(0, Ordering::SeqCst);
+        }
+    }
+}
+
+/// Without process groups, only the test binary itself is killed.
+#[cfg(not(unix))]
+mod process_group {
+    use std::process::{Child, Command};
+
+    pub fn prepare(_command: &mut Command) {}
+
+    pub struct Group;
+
+    impl Group {
+        pub fn new(_child: &Child) -> Group {
+            Group
+        }
+
+        pub fn kill(&self, child: &mut Child) {
+            let _ = child.kill();
+        }
+    }
+}
+
+/// How one test ended.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Outcome {
+    /// `ok`.
+    Passed,
+    /// `ignored`.
+    Ignored,
+    /// `FAILED`, with the first line of the panic message if one was printed.
+    Failed(Option<String>),
+}
+
+/// One test and how it ended.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TestResult {
+    /// As libtest prints it: `tests::offsets_are_signed`.
+    pub name: String,
+    /// How it ended.
+    pub outcome: Outcome,
+}
+
+/// What one test binary printed on stdout (libtest's pretty format).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Output {
+    /// Every test that reported, in the order they reported.
+    pub results: Vec<TestResult>,
+    /// It reached its `test result:` line.
+    pub finished: bool,
+    /// Tests libtest said were slow: `test x has been running for over 60 seconds`.
+    pub slow: Vec<String>,
+}
+
+/// Reads what one test binary printed on stdout.
+pub fn parse_output(stdout: &str) -> Output {
     let mut results = Vec::new();
+    let mut slow = Vec::new();
     let mut failures: HashMap<&str, String> = HashMap::new();
     let mut finished = false;
     let mut section: Option<(&str, Vec<&str>)> = None;
-    for line in block {
+    for line in stdout.lines() {
         if let Some(name) = line
             .strip_prefix("---- ")
             .and_then(|l| l.strip_suffix(" stdout ----"))
@@ -357,6 +770,14 @@ fn parse_block(block: Vec<&str>) -> (Vec<TestResult>, bool) {
         }
         if let Some((_, text)) = section.as_mut() {
             text.push(line);
+            continue;
+        }
+        if let Some(name) = line
+            .strip_prefix("test ")
+            .and_then(|l| l.split_once(" has been running for over "))
+            .map(|(name, _)| name)
+        {
+            slow.push(name.to_string());
             continue;
         }
         if let Some((name, status)) = line
@@ -383,7 +804,20 @@ fn parse_block(block: Vec<&str>) -> (Vec<TestResult>, bool) {
             *message = failures.get(result.name.as_str()).cloned();
         }
     }
-    (results, finished)
+    Output {
+        results,
+        finished,
+        slow,
+    }
+}
+
+/// The tests of `binary --list --format terse` (`name: test` lines), in order.
+pub fn parse_list(stdout: &str) -> Vec<String> {
+    stdout
+        .lines()
+        .filter_map(|line| line.strip_suffix(": test"))
+        .map(str::to_string)
+        .collect()
 }
 
 /// The first line of the first panic in a failed test's captured output; for
@@ -436,6 +870,132 @@ fn snapshot_difference(text: &[&str]) -> Option<String> {
     }
 }
 
+/// How a test binary's run ended.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Ended {
+    /// It exited by itself: successfully or not, and how, as cargo says it
+    /// (`exit status: 101`, `signal: 6, SIGABRT: process abort signal`).
+    Exited {
+        /// Exit status 0.
+        success: bool,
+        /// How.
+        how: String,
+    },
+    /// It could not be started: why.
+    NotStarted(String),
+    /// It was still running at `limit` and was killed.
+    TimedOut {
+        /// The time limit.
+        limit: Duration,
+        /// Its tests in the order libtest starts them (`--list`); empty if unknown.
+        listed: Vec<String>,
+        /// How many tests it ran at once (`--test-threads`).
+        threads: usize,
+    },
+}
+
+/// A test binary that was killed at the time limit.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TimedOut {
+    /// The limit.
+    pub limit: Duration,
+    /// The tests that were running when it was killed, if that is known.
+    pub still_running: Vec<String>,
+}
+
+impl fmt::Display for TimedOut {
+    /// `timed out after 60 s (still running: recursion::facing_mirrors_terminate)`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "timed out after {} s", self.limit.as_secs_f64())?;
+        if !self.still_running.is_empty() {
+            write!(f, " (still running: {})", self.still_running.join(", "))?;
+        }
+        Ok(())
+    }
+}
+
+/// The results of one test binary.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TestBinary {
+    /// Which target it was built from.
+    pub target: Target,
+    /// Every test that reported, in the order they reported.
+    pub results: Vec<TestResult>,
+    /// `None` if the binary printed its `test result:` line (or timed out);
+    /// otherwise why it stopped early.
+    pub crashed: Option<String>,
+    /// `Some` if it was killed at the time limit.
+    pub timed_out: Option<TimedOut>,
+}
+
+/// One binary's results from what it printed and how it ended.
+pub fn test_binary(target: Target, stdout: &str, ended: &Ended) -> TestBinary {
+    let output = parse_output(stdout);
+    let (crashed, timed_out) = match ended {
+        Ended::TimedOut {
+            limit,
+            listed,
+            threads,
+        } => (
+            None,
+            Some(TimedOut {
+                limit: *limit,
+                still_running: still_running(&output, listed, *threads),
+            }),
+        ),
+        _ if output.finished => (None, None),
+        Ended::Exited { success: true, .. } => {
+            (Some("the test binary stopped early".to_string()), None)
+        }
+        Ended::Exited { how, .. } => (Some(format!("the test binary crashed ({how})")), None),
+        Ended::NotStarted(why) => (
+            Some(format!("the test binary could not be started ({why})")),
+            None,
+        ),
+    };
+    TestBinary {
+        target,
+        results: output.results,
+        crashed,
+        timed_out,
+    }
+}
+
+/// The tests a killed binary was still running, in the order it started them.
+///
+/// libtest starts its tests in `--list` order, up to `threads` at a time,
+/// and starts the next whenever one ends. So when `done` tests have
+/// reported, the first `done + min(threads, unfinished)` tests of the list
+/// have started, and those among them that did not report are the ones
+/// running. If a test that reported is not among them the order was another
+/// (shuffled): only the tests libtest itself called slow are named then.
+fn still_running(output: &Output, listed: &[String], threads: usize) -> Vec<String> {
+    let reported: HashSet<&str> = output.results.iter().map(|r| r.name.as_str()).collect();
+    let done = listed
+        .iter()
+        .filter(|name| reported.contains(name.as_str()))
+        .count();
+    let started = &listed[..done + threads.max(1).min(listed.len() - done)];
+    let in_order = reported
+        .iter()
+        .all(|name| started.iter().any(|s| s == name));
+    let mut running: Vec<String> = if in_order {
+        started
+            .iter()
+            .filter(|name| !reported.contains(name.as_str()))
+            .cloned()
+            .collect()
+    } else {
+        Vec::new()
+    };
+    for name in &output.slow {
+        if !reported.contains(name.as_str()) && !running.contains(name) {
+            running.push(name.clone());
+        }
+    }
+    running
+}
+
 /// What happened to one exercise.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Verdict {
@@ -445,6 +1005,8 @@ pub enum Verdict {
     Failed(String),
     /// Every failing test stopped at a `todo!()`.
     NotAttempted,
+    /// The exercise's test binary was still running at the time limit.
+    TimedOut(TimedOut),
 }
 
 impl fmt::Display for Verdict {
@@ -453,6 +1015,7 @@ impl fmt::Display for Verdict {
             Verdict::Passed => write!(f, "passed"),
             Verdict::Failed(why) => write!(f, "failed: {why}"),
             Verdict::NotAttempted => write!(f, "not attempted"),
+            Verdict::TimedOut(timed_out) => write!(f, "{timed_out}"),
         }
     }
 }
@@ -462,9 +1025,10 @@ impl fmt::Display for Verdict {
 pub struct Report {
     /// Each exercise and its verdict, in the order given.
     pub exercises: Vec<(String, Verdict)>,
-    /// Other tests (unit tests, doc tests, tests of no exercise) that passed.
+    /// Other tests (unit tests, tests of no exercise) that passed.
     pub other_passed: usize,
-    /// Other tests that failed, each as `name: why`.
+    /// Other tests that failed, each as `name: why`, and other binaries that
+    /// crashed or timed out.
     pub other_failed: Vec<String>,
 }
 
@@ -545,6 +1109,9 @@ pub fn report(
         if let Some(crash) = &binary.crashed {
             other_failed.push(crash.clone());
         }
+        if let Some(timed_out) = &binary.timed_out {
+            other_failed.push(format!("{}: {timed_out}", binary.target));
+        }
     }
     Report {
         exercises,
@@ -557,6 +1124,10 @@ pub fn report(
 fn verdict(exercise: &str, binaries: &[&TestBinary], source: Option<&str>) -> Verdict {
     if binaries.is_empty() {
         return Verdict::Failed(format!("no tests ran (expected tests/{exercise}.rs)"));
+    }
+    // Killed before it could finish: what did report says too little.
+    if let Some(timed_out) = binaries.iter().find_map(|b| b.timed_out.as_ref()) {
+        return Verdict::TimedOut(timed_out.clone());
     }
     let position = |name: &str| {
         let short = name.rsplit("::").next().unwrap_or(name);
@@ -594,6 +1165,254 @@ fn describe(name: &str, why: Option<&str>) -> String {
     format!("{name}: {}", why.unwrap_or("failed (no panic message)"))
 }
 
+/// Just enough JSON to read cargo's messages (one value per line), so that
+/// raystep needs no JSON dependency.
+mod json {
+    /// A JSON value. Objects keep their members in order.
+    #[derive(Debug, Clone, PartialEq)]
+    pub enum Value {
+        Null,
+        Bool(bool),
+        Number(f64),
+        String(String),
+        Array(Vec<Value>),
+        Object(Vec<(String, Value)>),
+    }
+
+    impl Value {
+        /// The member `key` of an object.
+        pub fn get(&self, key: &str) -> Option<&Value> {
+            match self {
+                Value::Object(members) => members.iter().find(|(k, _)| k == key).map(|(_, v)| v),
+                _ => None,
+            }
+        }
+
+        pub fn as_str(&self) -> Option<&str> {
+            match self {
+                Value::String(s) => Some(s),
+                _ => None,
+            }
+        }
+
+        pub fn as_array(&self) -> Option<&[Value]> {
+            match self {
+                Value::Array(items) => Some(items),
+                _ => None,
+            }
+        }
+    }
+
+    /// Parses one JSON value (surrounded by whitespace at most); `None` if
+    /// `text` is anything else.
+    pub fn parse(text: &str) -> Option<Value> {
+        let mut parser = Parser { text, at: 0 };
+        let value = parser.value(0)?;
+        parser.skip_whitespace();
+        (parser.at == text.len()).then_some(value)
+    }
+
+    /// Deeper nesting is refused rather than overflowing the stack.
+    const MAX_DEPTH: usize = 128;
+
+    struct Parser<'a> {
+        text: &'a str,
+        at: usize,
+    }
+
+    impl Parser<'_> {
+        fn peek(&self) -> Option<u8> {
+            self.text.as_bytes().get(self.at).copied()
+        }
+
+        fn skip_whitespace(&mut self) {
+            while matches!(self.peek(), Some(b' ' | b'\t' | b'\n' | b'\r')) {
+                self.at += 1;
+            }
+        }
+
+        fn eat(&mut self, literal: &str) -> Option<()> {
+            self.text[self.at..].starts_with(literal).then(|| {
+                self.at += literal.len();
+            })
+        }
+
+        fn value(&mut self, depth: usize) -> Option<Value> {
+            if depth > MAX_DEPTH {
+                return None;
+            }
+            self.skip_whitespace();
+            match self.peek()? {
+                b'n' => self.eat("null").map(|()| Value::Null),
+                b't' => self.eat("true").map(|()| Value::Bool(true)),
+                b'f' => self.eat("false").map(|()| Value::Bool(false)),
+                b'"' => self.string().map(Value::String),
+                b'[' => {
+                    self.at += 1;
+                    let mut items = Vec::new();
+                    self.skip_whitespace();
+                    if self.eat("]").is_some() {
+                        return Some(Value::Array(items));
+                    }
+                    loop {
+                        items.push(self.value(depth + 1)?);
+                        self.skip_whitespace();
+                        if self.eat("]").is_some() {
+                            return Some(Value::Array(items));
+                        }
+                        self.eat(",")?;
+                    }
+                }
+                b'{' => {
+                    self.at += 1;
+                    let mut members = Vec::new();
+                    self.skip_whitespace();
+                    if self.eat("}").is_some() {
+                        return Some(Value::Object(members));
+                    }
+                    loop {
+                        self.skip_whitespace();
+                        let key = self.string()?;
+                        self.skip_whitespace();
+                        self.eat(":")?;
+                        members.push((key, self.value(depth + 1)?));
+                        self.skip_whitespace();
+                        if self.eat("}").is_some() {
+                            return Some(Value::Object(members));
+                        }
+                        self.eat(",")?;
+                    }
+                }
+                b'-' | b'0'..=b'9' => self.number(),
+                _ => None,
+            }
+        }
+
+        fn number(&mut self) -> Option<Value> {
+            let start = self.at;
+            while matches!(
+                self.peek(),
+                Some(b'-' | b'+' | b'.' | b'e' | b'E' | b'0'..=b'9')
+            ) {
+                self.at += 1;
+            }
+            let number = &self.text[start..self.at];
+            // Rust accepts a few spellings JSON does not ("1.", ".5" cannot start here).
+            if number.ends_with('.') || number.contains(".e") || number.contains(".E") {
+                return None;
+            }
+            number.parse().ok().map(Value::Number)
+        }
+
+        /// A string literal, the parser on its opening quote.
+        fn string(&mut self) -> Option<String> {
+            self.eat("\"")?;
+            let mut string = String::new();
+            loop {
+                let rest = &self.text[self.at..];
+                let end = rest.find(['"', '\\'])?;
+                if rest[..end].chars().any(|c| c < ' ') {
+                    return None;
+                }
+                string.push_str(&rest[..end]);
+                self.at += end + 1;
+                if rest.as_bytes()[end] == b'"' {
+                    return Some(string);
+                }
+                let escape = self.peek()?;
+                self.at += 1;
+                match escape {
+                    b'"' => string.push('"'),
+                    b'\\' => string.push('\\'),
+                    b'/' => string.push('/'),
+                    b'b' => string.push('\u{8}'),
+                    b'f' => string.push('\u{c}'),
+                    b'n' => string.push('\n'),
+                    b'r' => string.push('\r'),
+                    b't' => string.push('\t'),
+                    b'u' => {
+                        let unit = self.hex4()?;
+                        let code = if (0xD800..0xDC00).contains(&unit) {
+                            // A surrogate pair: `\ud83d\ude00`.
+                            self.eat("\\u")?;
+                            let low = self.hex4()?;
+                            if !(0xDC00..0xE000).contains(&low) {
+                                return None;
+                            }
+                            0x10000 + ((unit - 0xD800) << 10) + (low - 0xDC00)
+                        } else {
+                            unit
+                        };
+                        string.push(char::from_u32(code)?);
+                    }
+                    _ => return None,
+                }
+            }
+        }
+
+        fn hex4(&mut self) -> Option<u32> {
+            let digits = self.text.get(self.at..self.at + 4)?;
+            if !digits.bytes().all(|b| b.is_ascii_hexdigit()) {
+                return None;
+            }
+            self.at += 4;
+            u32::from_str_radix(digits, 16).ok()
+        }
+    }
+
+    #[cfg(test)]
+    mod tests {
+        use super::*;
+
+        #[test]
+        fn values_and_nesting() {
+            let value =
+                parse(r#" {"a": [1, -2.5e3, true, false, null], "b": {}, "c": []} "#).unwrap();
+            assert_eq!(
+                value.get("a"),
+                Some(&Value::Array(vec![
+                    Value::Number(1.0),
+                    Value::Number(-2500.0),
+                    Value::Bool(true),
+                    Value::Bool(false),
+                    Value::Null,
+                ]))
+            );
+            assert_eq!(value.get("b"), Some(&Value::Object(vec![])));
+            assert_eq!(value.get("c").and_then(Value::as_array), Some(&[][..]));
+            assert_eq!(value.get("d"), None);
+        }
+
+        #[test]
+        fn string_escapes() {
+            let value = parse(r#""a\"b\\c\/d\n\t\u00e9\ud83d\ude00 ü""#).unwrap();
+            assert_eq!(value.as_str(), Some("a\"b\\c/d\n\té😀 ü"));
+        }
+
+        #[test]
+        fn malformed_input_is_refused() {
+            for text in [
+                "",
+                "{",
+                r#"{"a" 1}"#,
+                r#"{"a": 1,}"#,
+                "[1 2]",
+                r#""unterminated"#,
+                r#""\x""#,
+                r#""\ud83d""#,
+                "\"tab\tinside\"",
+                "1.",
+                "nul",
+                "{} {}",
+                "   Compiling ch01 v0.1.0",
+            ] {
+                assert_eq!(parse(text), None, "{text:?}");
+            }
+            assert_eq!(parse(&"[".repeat(1000)), None);
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -602,34 +1421,134 @@ mod tests {
         names.iter().map(|s| s.to_string()).collect()
     }
 
+    /// `running 1 test`, `running 12 tests`: where one binary's output starts.
+    fn is_running_line(line: &str) -> bool {
+        line.strip_prefix("running ")
+            .and_then(|rest| {
+                rest.strip_suffix(" tests")
+                    .or_else(|| rest.strip_suffix(" test"))
+            })
+            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
+    }
+
+    /// The fixtures hold what several test binaries printed one after the
+    /// other (as `cargo test` shows it): split at each `running N tests`.
+    fn split(stdout: &str) -> Vec<String> {
+        let mut outputs: Vec<String> = Vec::new();
+        for line in stdout.lines() {
+            if is_running_line(line) {
+                outputs.push(String::new());
+            }
+            if let Some(output) = outputs.last_mut() {
+                output.push_str(line);
+                output.push('\n');
+            }
+        }
+        outputs
+    }
+
+    /// Binaries that exited with libtest's failure status.
+    fn exited(targets: Vec<Target>, stdout: &str) -> Vec<TestBinary> {
+        let outputs = split(stdout);
+        assert_eq!(outputs.len(), targets.len());
+        let ended = Ended::Exited {
+            success: false,
+            how: "exit status: 101".to_string(),
+        };
+        targets
+            .into_iter()
+            .zip(outputs)
+            .map(|(target, output)| test_binary(target, &output, &ended))
+            .collect()
+    }
+
+    fn sample_targets() -> Vec<Target> {
+        vec![
+            Target::Unit("src/lib.rs".into()),
+            Target::Test("add".into()),
+            Target::Test("other".into()),
+            Target::Test("triple".into()),
+        ]
+    }
+
     /// A chapter with exercises `add` (both tests hit `todo!()`) and `triple`
     /// (a wrong answer: an insta snapshot and an `assert_eq!` fail), other
     /// tests in `src/lib.rs` and `tests/other.rs`.
     fn student() -> Vec<TestBinary> {
-        parse(
-            include_str!("../testdata/student.stdout"),
-            include_str!("../testdata/student.stderr"),
-        )
-        .unwrap()
+        exited(sample_targets(), include_str!("../testdata/student.stdout"))
     }
 
     #[test]
-    fn binaries_are_paired_with_their_targets() {
-        let binaries = student();
-        let targets: Vec<Target> = binaries.iter().map(|b| b.target.clone()).collect();
+    fn test_executables_are_read_from_cargos_messages() {
+        let executables = test_executables(include_str!("../testdata/artifacts.jsonl"));
+        let manifest =
+            PathBuf::from("/work/check-wt/chapters/ch01-implicit-lines-planes/Cargo.toml");
+        let deps = Path::new("/work/main/target/debug/deps");
         assert_eq!(
-            targets,
+            executables,
             [
-                Target::Unit("src/lib.rs".into()),
-                Target::Test("add".into()),
-                Target::Test("other".into()),
-                Target::Test("triple".into()),
-                Target::Doc,
+                Executable {
+                    target: Target::Unit("src/lib.rs".into()),
+                    path: deps.join("ch01-754aa3f610206f77"),
+                    manifest_path: manifest.clone(),
+                },
+                Executable {
+                    target: Target::Unit("src/bin/ch01-figures.rs".into()),
+                    path: deps.join("ch01_figures-f9cb07e01a0e3669"),
+                    manifest_path: manifest.clone(),
+                },
+                Executable {
+                    target: Target::Test("line_through_points".into()),
+                    path: deps.join("line_through_points-94ea8b96c78fea7c"),
+                    manifest_path: manifest.clone(),
+                },
+                Executable {
+                    target: Target::Test("plane_through_points".into()),
+                    path: deps.join("plane_through_points-b61bbc251acfa3bc"),
+                    manifest_path: manifest.clone(),
+                },
             ]
         );
-        assert!(binaries.iter().all(|b| b.crashed.is_none()));
-        assert_eq!(binaries[0].results.len(), 1);
-        assert_eq!(binaries[4].results.len(), 0);
+        assert_eq!(
+            executables[0].package_dir(),
+            Path::new("/work/check-wt/chapters/ch01-implicit-lines-planes")
+        );
+        assert_eq!(executables[0].target.to_string(), "unittests src/lib.rs");
+        assert_eq!(
+            executables[2].target.to_string(),
+            "tests/line_through_points.rs"
+        );
+    }
+
+    #[test]
+    fn lines_that_are_not_test_artifacts_are_skipped() {
+        let messages = "   Compiling ch01 v0.1.0\n\
+            {\"reason\":\"compiler-artifact\",\"profile\":{\"test\":true},\"executable\":null,\
+             \"manifest_path\":\"/p/Cargo.toml\",\"target\":{\"kind\":[\"lib\"],\"name\":\"p\",\"src_path\":\"/p/src/lib.rs\"}}\n\
+            {\"reason\":\"compiler-message\",\"profile\":{\"test\":true},\"executable\":\"/t/x\",\
+             \"manifest_path\":\"/p/Cargo.toml\",\"target\":{\"kind\":[\"test\"],\"name\":\"x\",\"src_path\":\"/p/tests/x.rs\"}}\n\
+            {\"reason\":\"compiler-artifact\",\"profile\":{\"test\":true},\"executable\":\"/t/y\",\
+             \"manifest_path\":\"/p/Cargo.toml\",\"target\":{\"kind\":[\"test\"],\"name\":\"y\",\"src_path\":\"/p/tests/y/main.rs\"}}\n\
+            {\"reason\":\"build-finished\",\"success\":true}\n";
+        let executables = test_executables(messages);
+        assert_eq!(executables.len(), 1);
+        assert_eq!(executables[0].target, Target::Test("y".into()));
+        assert_eq!(executables[0].path, Path::new("/t/y"));
+    }
+
+    #[test]
+    fn each_binarys_output_is_read() {
+        let binaries = student();
+        assert!(
+            binaries
+                .iter()
+                .all(|b| b.crashed.is_none() && b.timed_out.is_none())
+        );
+        let counts: Vec<usize> = binaries.iter().map(|b| b.results.len()).collect();
+        assert_eq!(counts, [1, 2, 1, 3]);
+        let output = parse_output(&split(include_str!("../testdata/student.stdout"))[1]);
+        assert!(output.finished);
+        assert!(output.slow.is_empty());
     }
 
     #[test]
@@ -710,11 +1629,10 @@ mod tests {
 
     #[test]
     fn reference_verdicts() {
-        let binaries = parse(
+        let binaries = exited(
+            sample_targets(),
             include_str!("../testdata/reference.stdout"),
-            include_str!("../testdata/reference.stderr"),
-        )
-        .unwrap();
+        );
         let report = report(&exercises(&["add", "triple"]), &binaries, &HashMap::new());
         assert_eq!(
             report.exercises,
@@ -738,7 +1656,7 @@ mod tests {
 
     #[test]
     fn compile_errors_are_reported_with_their_location() {
-        let failure = parse("", include_str!("../testdata/compile-error.stderr")).unwrap_err();
+        let failure = cargo_failure(include_str!("../testdata/compile-error.stderr"));
         assert_eq!(
             failure.to_string(),
             "the tests do not compile: error[E0308]: mismatched types (at exercise/ex.rs:3:26)"
@@ -747,7 +1665,7 @@ mod tests {
 
     #[test]
     fn a_killed_compiler_is_reported_with_how_it_stopped() {
-        let failure = parse("", include_str!("../testdata/compiler-killed.stderr")).unwrap_err();
+        let failure = cargo_failure(include_str!("../testdata/compiler-killed.stderr"));
         assert_eq!(
             failure.to_string(),
             "the tests do not compile: error: could not compile `ch07-two-methods` (test \"render\"); \
@@ -759,18 +1677,26 @@ mod tests {
     fn other_cargo_errors_are_reported() {
         let stderr = "error: none of the selected packages contains this feature: exercise\n";
         assert_eq!(
-            parse("", stderr).unwrap_err(),
+            cargo_failure(stderr),
             CargoFailure::Cargo(stderr.trim().to_string())
         );
     }
 
     #[test]
     fn a_crashing_binary_fails_its_exercise() {
-        let binaries = parse(
-            include_str!("../testdata/crash.stdout"),
-            include_str!("../testdata/crash.stderr"),
-        )
-        .unwrap();
+        let outputs = split(include_str!("../testdata/crash.stdout"));
+        let abort = Ended::Exited {
+            success: false,
+            how: "signal: 6, SIGABRT: process abort signal".to_string(),
+        };
+        let ok = Ended::Exited {
+            success: true,
+            how: "exit status: 0".to_string(),
+        };
+        let binaries = [
+            test_binary(Target::Test("crash".into()), &outputs[0], &abort),
+            test_binary(Target::Test("other".into()), &outputs[1], &ok),
+        ];
         assert_eq!(
             binaries[0].crashed.as_deref(),
             Some("the test binary crashed (signal: 6, SIGABRT: process abort signal)")
@@ -787,32 +1713,52 @@ mod tests {
     }
 
     #[test]
-    fn doc_tests_ignored_tests_and_module_paths() {
-        let stdout = "\nrunning 3 tests\n\
+    fn a_binary_that_stops_early_or_never_starts_fails() {
+        let started = "\nrunning 2 tests\ntest a ... ok\n";
+        let ok = Ended::Exited {
+            success: true,
+            how: "exit status: 0".to_string(),
+        };
+        let binary = test_binary(Target::Test("early".into()), started, &ok);
+        assert_eq!(
+            binary.crashed.as_deref(),
+            Some("the test binary stopped early")
+        );
+        let missing = Ended::NotStarted("No such file or directory (os error 2)".to_string());
+        let binary = test_binary(Target::Test("gone".into()), "", &missing);
+        assert_eq!(
+            binary.crashed.as_deref(),
+            Some("the test binary could not be started (No such file or directory (os error 2))")
+        );
+    }
+
+    #[test]
+    fn ignored_tests_module_paths_and_other_binaries() {
+        let lib = "\nrunning 3 tests\n\
             test tests::fits ... ok\n\
             test tests::slow ... ignored, takes a minute\n\
             test tests::rounds - should panic ... ok\n\n\
-            test result: ok. 2 passed; 0 failed; 1 ignored; 0 measured; 0 filtered out; finished in 0.00s\n\n\
-            running 1 test\n\
-            test chapters/ch01/src/lib.rs - Line2 (line 7) ... FAILED\n\n\
+            test result: ok. 2 passed; 0 failed; 1 ignored; 0 measured; 0 filtered out; finished in 0.00s\n\n";
+        let bin = "\nrunning 1 test\n\
+            test tests::draws ... FAILED\n\n\
             failures:\n\n\
-            ---- chapters/ch01/src/lib.rs - Line2 (line 7) stdout ----\n\
-            Test executable failed (exit status: 101).\n\n\
-            stderr:\n\n\
-            thread 'main' (42) panicked at chapters/ch01/src/lib.rs:5:1:\n\
-            not yet implemented\n\n\n\
-            failures:\n    chapters/ch01/src/lib.rs - Line2 (line 7)\n\n\
-            test result: FAILED. 0 passed; 1 failed; 0 ignored; 0 measured; 0 filtered out; finished in 0.10s\n";
-        let stderr =
-            "     Running unittests src/lib.rs (target/debug/deps/ch01-1)\n   Doc-tests ch01\n";
-        let binaries = parse(stdout, stderr).unwrap();
-        assert_eq!(binaries.len(), 2);
+            ---- tests::draws stdout ----\n\n\
+            thread 'tests::draws' (42) panicked at chapters/ch01/src/bin/figures.rs:5:1:\n\
+            not yet implemented\n\
+            note: run with `RUST_BACKTRACE=1` environment variable to display a backtrace\n\n\n\
+            failures:\n    tests::draws\n\n\
+            test result: FAILED. 0 passed; 1 failed; 0 ignored; 0 measured; 0 filtered out; finished in 0.10s\n\n";
+        let failed = Ended::Exited {
+            success: false,
+            how: "exit status: 101".to_string(),
+        };
+        let binaries = [
+            test_binary(Target::Unit("src/lib.rs".into()), lib, &failed),
+            test_binary(Target::Unit("src/bin/figures.rs".into()), bin, &failed),
+        ];
         let report = report(&[], &binaries, &HashMap::new());
         assert_eq!(report.other_passed, 2);
-        assert_eq!(
-            report.other_failed,
-            ["chapters/ch01/src/lib.rs - Line2 (line 7): not yet implemented"]
-        );
+        assert_eq!(report.other_failed, ["tests::draws: not yet implemented"]);
         assert!(!report.all_passed());
         assert!(
             report
@@ -821,17 +1767,201 @@ mod tests {
         );
     }
 
+    /// `recursion.rs` of a chapter, killed while `facing_mirrors_terminate` loops.
+    const KILLED: &str = "\nrunning 4 tests\n\
+        test a_mirror_reflects ... ok\n\
+        test depth_is_limited ... FAILED\n";
+
+    fn listed() -> Vec<String> {
+        exercises(&[
+            "a_mirror_reflects",
+            "depth_is_limited",
+            "facing_mirrors_terminate",
+            "weights_shrink",
+        ])
+    }
+
+    fn timed_out(threads: usize, listed: Vec<String>) -> Ended {
+        Ended::TimedOut {
+            limit: Duration::from_secs(60),
+            listed,
+            threads,
+        }
+    }
+
     #[test]
-    fn running_lines() {
-        assert!(is_running_line("running 1 test"));
-        assert!(is_running_line("running 12 tests"));
-        assert!(!is_running_line("running tests"));
-        assert!(!is_running_line("  running 1 test"));
+    fn a_timed_out_exercise_names_its_unfinished_tests() {
+        let binaries = [
+            test_binary(
+                Target::Unit("src/lib.rs".into()),
+                "\nrunning 0 tests\n\ntest result: ok. 0 passed\n",
+                &Ended::Exited {
+                    success: true,
+                    how: "exit status: 0".into(),
+                },
+            ),
+            test_binary(
+                Target::Test("recursion".into()),
+                KILLED,
+                &timed_out(1, listed()),
+            ),
+        ];
+        assert_eq!(binaries[1].crashed, None);
+        let report = report(&exercises(&["recursion"]), &binaries, &HashMap::new());
+        assert_eq!(
+            report.exercises[0].1,
+            Verdict::TimedOut(TimedOut {
+                limit: Duration::from_secs(60),
+                still_running: exercises(&["facing_mirrors_terminate"]),
+            })
+        );
+        assert_eq!(
+            report.to_string(),
+            "  recursion    timed out after 60 s (still running: facing_mirrors_terminate)\n\
+             \x20 other tests  0 passed, 0 failed\n\
+             0 of 1 exercises passed\n"
+        );
+        assert!(!report.all_passed());
+    }
+
+    #[test]
+    fn running_tests_follow_the_list_order_and_the_thread_count() {
+        let running = |ended: &Ended| {
+            test_binary(Target::Test("recursion".into()), KILLED, ended)
+                .timed_out
+                .unwrap()
+                .still_running
+        };
+        // Two threads: both tests after the two that reported had started.
+        assert_eq!(
+            running(&timed_out(2, listed())),
+            ["facing_mirrors_terminate", "weights_shrink"]
+        );
+        assert_eq!(
+            running(&timed_out(8, listed())),
+            ["facing_mirrors_terminate", "weights_shrink"]
+        );
+        // A test that reported but would not have started yet: another order.
+        let shuffled = exercises(&[
+            "facing_mirrors_terminate",
+            "weights_shrink",
+            "a_mirror_reflects",
+            "depth_is_limited",
+        ]);
+        assert!(running(&timed_out(1, shuffled)).is_empty());
+        // No list: nothing to say.
+        assert!(running(&timed_out(1, Vec::new())).is_empty());
+        // Unless libtest itself said which test was slow.
+        let warned = format!("{KILLED}test weights_shrink has been running for over 60 seconds\n");
+        let binary = test_binary(Target::Test("r".into()), &warned, &timed_out(1, Vec::new()));
+        assert_eq!(
+            binary.timed_out.unwrap().to_string(),
+            "timed out after 60 s (still running: weights_shrink)"
+        );
+    }
+
+    #[test]
+    fn a_timed_out_other_binary_is_an_other_failure() {
+        let ended = Ended::TimedOut {
+            limit: Duration::from_millis(2500),
+            listed: exercises(&["tests::spins"]),
+            threads: 4,
+        };
+        let binaries = [test_binary(
+            Target::Unit("src/lib.rs".into()),
+            "\nrunning 1 test\n",
+            &ended,
+        )];
+        let report = report(&[], &binaries, &HashMap::new());
+        assert_eq!(
+            report.other_failed,
+            ["unittests src/lib.rs: timed out after 2.5 s (still running: tests::spins)"]
+        );
+        assert!(!report.all_passed());
+        // Without a list or a warning the message names no test.
+        let unknown = Ended::TimedOut {
+            limit: Duration::from_secs(3),
+            listed: Vec::new(),
+            threads: 4,
+        };
+        let binary = test_binary(Target::Test("x".into()), "", &unknown);
+        assert_eq!(binary.timed_out.unwrap().to_string(), "timed out after 3 s");
+    }
+
+    #[test]
+    fn listed_tests_are_read() {
+        assert_eq!(
+            parse_list("a::b: test\nc: test\nbench_it: bench\n"),
+            ["a::b", "c"]
+        );
+        assert!(parse_list("").is_empty());
     }
 
     #[test]
     fn nested_test_folders_are_named_by_folder() {
         assert_eq!(test_stem("tests/line.rs"), "line");
         assert_eq!(test_stem("tests/line/main.rs"), "line");
+    }
+
+    #[cfg(unix)]
+    fn shell(script: &str) -> Command {
+        let mut command = Command::new("sh");
+        command.args(["-c", script]);
+        command
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_process_past_its_limit_is_killed() {
+        let ran =
+            run_with_limit(Command::new("sleep").arg("30"), Duration::from_millis(300)).unwrap();
+        assert!(matches!(ran.exit, Exit::TimedOut), "{ran:?}");
+    }
+
+    /// The processes a test binary started die with it.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn a_killed_process_takes_its_children_along() {
+        let ran = run_with_limit(
+            &mut shell("sleep 30 & echo $!; wait"),
+            Duration::from_millis(300),
+        )
+        .unwrap();
+        assert!(matches!(ran.exit, Exit::TimedOut), "{ran:?}");
+        let sleep: u32 = ran.stdout.trim().parse().expect("the child's pid");
+        // Dead (or a zombie nobody has reaped yet); SIGKILL is delivered at once,
+        // give the kernel a moment all the same.
+        let dead = || {
+            std::fs::read_to_string(format!("/proc/{sleep}/stat")).map_or(true, |stat| {
+                stat.rsplit_once(") ")
+                    .is_some_and(|(_, s)| s.starts_with('Z'))
+            })
+        };
+        let until = Instant::now() + Duration::from_secs(5);
+        while !dead() && Instant::now() < until {
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        assert!(dead(), "sleep {sleep} outlived the kill");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn how_a_process_ended_is_said_as_cargo_says_it() {
+        let ran =
+            run_with_limit(&mut shell("echo partial; exit 3"), Duration::from_secs(30)).unwrap();
+        assert_eq!(ran.stdout, "partial\n");
+        let Exit::Status(status) = ran.exit else {
+            panic!("{ran:?}")
+        };
+        assert_eq!(describe_status(status), "exit status: 3");
+        let ran = run_with_limit(&mut shell("kill -ABRT $$"), Duration::from_secs(30)).unwrap();
+        let Exit::Status(status) = ran.exit else {
+            panic!("{ran:?}")
+        };
+        assert_eq!(
+            describe_status(status),
+            "signal: 6, SIGABRT: process abort signal"
+        );
+        assert_eq!(describe_signal(64), "signal: 64");
     }
 }

@@ -18,6 +18,7 @@ mod workspace;
 use std::io;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::time::Duration;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
@@ -77,6 +78,15 @@ enum Command {
         chapter: Option<String>,
     },
     /// Run a chapter's tests in student mode and report each exercise.
+    ///
+    /// Cargo builds the chapter's tests (`cargo test --no-run`, with the
+    /// `exercise` feature unless `--reference`); raystep then runs each test
+    /// binary itself, one after the other: the unit tests (the library's
+    /// first), then `tests/*.rs` by name.
+    /// Each exercise gets one verdict: `passed`, `failed: <test>: <message>`,
+    /// `not attempted` (every failing test stopped at `todo!()`) or `timed out
+    /// after N s`. The verdicts do not depend on cargo's `term` settings.
+    /// Doc tests are not run (the chapters have none).
     Check {
         /// The chapter: `ch01`, `01` or `1`.
         chapter: String,
@@ -86,6 +96,11 @@ enum Command {
         /// Build in this target directory [env: RAYSTEP_CHECK_TARGET_DIR; default: cargo's].
         #[arg(long, value_name = "DIR")]
         target_dir: Option<PathBuf>,
+        /// Kill a test binary still running after this many seconds; its
+        /// exercise is `timed out`.
+        #[arg(long, value_name = "SECS", value_parser = seconds,
+              default_value_t = check::DEFAULT_TIMEOUT_SECS as f64)]
+        timeout: f64,
         /// Do not echo cargo's progress on stderr.
         #[arg(long, short)]
         quiet: bool,
@@ -107,6 +122,14 @@ impl From<FormatArg> for raystep_figure::Format {
             FormatArg::Png => raystep_figure::Format::Png,
             FormatArg::Both => raystep_figure::Format::Both,
         }
+    }
+}
+
+/// Parses `--timeout`: a positive number of seconds, `60` or `2.5`.
+fn seconds(arg: &str) -> Result<f64, String> {
+    match arg.trim().parse::<f64>() {
+        Ok(s) if s > 0.0 && Duration::try_from_secs_f64(s).is_ok() => Ok(s),
+        _ => Err("expected a positive number of seconds".to_string()),
     }
 }
 
@@ -234,12 +257,16 @@ fn main() -> ExitCode {
             chapter,
             reference,
             target_dir,
+            timeout,
             quiet,
         } => check::run(&check::Options {
             chapter,
             reference,
             target_dir: target_dir
-                .or_else(|| std::env::var_os("RAYSTEP_CHECK_TARGET_DIR").map(PathBuf::from)),
+                .or_else(|| std::env::var_os("RAYSTEP_CHECK_TARGET_DIR").map(PathBuf::from))
+                // Cargo runs in the workspace root: a relative folder means the current one.
+                .map(|dir| std::path::absolute(&dir).unwrap_or(dir)),
+            timeout: Duration::from_secs_f64(timeout),
             quiet,
         }),
     };
@@ -268,6 +295,31 @@ mod tests {
             one_line(&error.to_string()),
             "error: the following required arguments were not provided: <CHAPTER>"
         );
+    }
+
+    #[test]
+    fn the_timeout_is_a_positive_number_of_seconds() {
+        let timeout = |args: &[&str]| match Cli::try_parse_from(args) {
+            Ok(Cli {
+                command: Command::Check { timeout, .. },
+            }) => Ok(timeout),
+            Ok(other) => panic!("{other:?}"),
+            Err(error) => Err(one_line(&error.to_string())),
+        };
+        assert_eq!(timeout(&["raystep", "check", "1"]), Ok(60.0));
+        assert_eq!(
+            timeout(&["raystep", "check", "1", "--timeout", "2.5"]),
+            Ok(2.5)
+        );
+        for bad in ["0", "-3", "NaN", "inf", "1e30", "soon"] {
+            assert_eq!(
+                timeout(&["raystep", "check", "1", &format!("--timeout={bad}")]),
+                Err(format!(
+                    "error: invalid value '{bad}' for '--timeout <SECS>': \
+                     expected a positive number of seconds"
+                )),
+            );
+        }
     }
 
     #[test]

@@ -1,11 +1,12 @@
-//! `raystep check` on the real chapters: the reference solution passes every
-//! exercise, and the untouched stubs pass none.
+//! `raystep check` end to end: on the real chapters the reference solution
+//! passes every exercise and the untouched stubs pass none, whatever the
+//! user's cargo settings; on a throwaway chapter an endless loop times out.
 //!
-//! This runs cargo from inside `cargo test`, twice per chapter (with and
-//! without the `exercise` feature). The nested cargo shares the outer target
-//! folder (`RAYSTEP_CHECK_TARGET_DIR` = the parent of `CARGO_TARGET_TMPDIR`),
-//! so it reuses every compiled dependency and rebuilds only the chapter: cargo
-//! releases its build lock before it runs test binaries, so nothing blocks.
+//! This runs cargo from inside `cargo test`. For the real chapters the nested
+//! cargo shares the outer target folder (`RAYSTEP_CHECK_TARGET_DIR` = the
+//! parent of `CARGO_TARGET_TMPDIR`), so it reuses every compiled dependency
+//! and rebuilds only the chapter; `raystep check` runs the test binaries
+//! after cargo has finished (and released its build lock).
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -50,17 +51,30 @@ fn chapters() -> Vec<(String, Vec<String>)> {
     chapters
 }
 
-/// Runs `raystep check <args>`: (success, stdout, stderr).
+/// Runs `raystep check <args> --quiet` in the workspace, building in the
+/// outer target folder: (success, stdout, stderr).
 fn check(args: &[&str]) -> (bool, String, String) {
+    raystep(args, &workspace(), |command| {
+        command.env("RAYSTEP_CHECK_TARGET_DIR", outer_target());
+    })
+}
+
+/// Runs `raystep check <args> --quiet` in `dir`, its environment adjusted by
+/// `configure`: (success, stdout, stderr).
+fn raystep(
+    args: &[&str],
+    dir: &Path,
+    configure: impl FnOnce(&mut Command),
+) -> (bool, String, String) {
     let started = Instant::now();
-    let out = Command::new(env!("CARGO_BIN_EXE_raystep"))
+    let mut command = Command::new(env!("CARGO_BIN_EXE_raystep"));
+    command
         .arg("check")
         .args(args)
         .arg("--quiet")
-        .current_dir(workspace())
-        .env("RAYSTEP_CHECK_TARGET_DIR", outer_target())
-        .output()
-        .expect("raystep runs");
+        .current_dir(dir);
+    configure(&mut command);
+    let out = command.output().expect("raystep runs");
     eprintln!(
         "raystep check {} took {:.1?}",
         args.join(" "),
@@ -115,4 +129,156 @@ fn the_reference_passes_and_the_stubs_do_not() {
             "{chapter} student mode:\n{report}{stderr}"
         );
     }
+}
+
+/// Cargo settings that change what cargo prints (no `Running` lines, coloured
+/// or verbose output) do not change a verdict.
+#[test]
+fn verdicts_do_not_depend_on_cargo_settings() {
+    const SETTINGS: [(&str, &str); 4] = [
+        ("CARGO_TERM_QUIET", "true"),
+        ("CARGO_TERM_COLOR", "always"),
+        ("CARGO_TERM_VERBOSE", "true"),
+        ("CARGO_BUILD_JOBS", "1"),
+    ];
+    let (ok, plain, stderr) = raystep(&["ch01"], &workspace(), |command| {
+        for (name, _) in SETTINGS {
+            command.env_remove(name);
+        }
+        command.env("RAYSTEP_CHECK_TARGET_DIR", outer_target());
+    });
+    assert!(!ok, "{plain}{stderr}");
+    for exercise in ["line_through_points", "plane_through_points"] {
+        assert_eq!(
+            verdict(&plain, &stderr, exercise),
+            "not attempted",
+            "{plain}{stderr}"
+        );
+    }
+
+    let (ok, configured, stderr) = raystep(&["ch01"], &workspace(), |command| {
+        command
+            .envs(SETTINGS)
+            .env("CARGO_TARGET_DIR", outer_target())
+            .env_remove("RAYSTEP_CHECK_TARGET_DIR");
+    });
+    assert!(!ok, "{configured}{stderr}");
+    assert_eq!(configured, plain, "with {SETTINGS:?}:\n{stderr}");
+}
+
+/// Writes `text` to `path` unless it holds it already (cargo rebuilds what
+/// has a newer modification time).
+fn write(path: &Path, text: &str) {
+    if fs::read_to_string(path).ok().as_deref() != Some(text) {
+        fs::create_dir_all(path.parent().unwrap()).unwrap();
+        fs::write(path, text).unwrap();
+    }
+}
+
+/// A throwaway workspace shaped like the real one: chapter 01 with the same
+/// package and exercise names, where the stub of `line_through_points`
+/// loops forever and the one of `plane_through_points` is right.
+fn looping_workspace() -> PathBuf {
+    let root = Path::new(env!("CARGO_TARGET_TMPDIR")).join("check-timeout");
+    let chapter = root.join("chapters/ch01-implicit-lines-planes");
+    write(
+        &root.join("Cargo.toml"),
+        "[workspace]\nresolver = \"3\"\nmembers = [\"chapters/ch01-implicit-lines-planes\"]\n",
+    );
+    write(
+        &chapter.join("Cargo.toml"),
+        "[package]\n\
+         name = \"ch01-implicit-lines-planes\"\n\
+         version = \"0.1.0\"\n\
+         edition = \"2024\"\n\
+         publish = false\n\n\
+         [lib]\n\
+         name = \"ch01\"\n\n\
+         [features]\n\
+         exercise = []\n",
+    );
+    write(
+        &chapter.join("src/lib.rs"),
+        "#[cfg_attr(feature = \"exercise\", path = \"../exercise/line_through_points.rs\")]\n\
+         mod line_through_points;\n\
+         #[cfg_attr(feature = \"exercise\", path = \"../exercise/plane_through_points.rs\")]\n\
+         mod plane_through_points;\n\n\
+         pub use line_through_points::slope;\n\
+         pub use plane_through_points::normal_z;\n\n\
+         #[cfg(test)]\n\
+         mod tests {\n\
+         \x20   #[test]\n\
+         \x20   fn a_unit_test() {}\n\
+         }\n",
+    );
+    let slope = "pub fn slope(p0: (f64, f64), p1: (f64, f64)) -> f64 {\n\
+                 \x20   (p1.1 - p0.1) / (p1.0 - p0.0)\n\
+                 }\n";
+    write(&chapter.join("src/line_through_points.rs"), slope);
+    write(
+        &chapter.join("exercise/line_through_points.rs"),
+        "pub fn slope(p0: (f64, f64), p1: (f64, f64)) -> f64 {\n\
+         \x20   let _ = (p0, p1);\n\
+         \x20   loop {\n\
+         \x20       std::thread::sleep(std::time::Duration::from_millis(10));\n\
+         \x20   }\n\
+         }\n",
+    );
+    let normal = "pub fn normal_z(a: (f64, f64), b: (f64, f64)) -> f64 {\n\
+                  \x20   a.0 * b.1 - a.1 * b.0\n\
+                  }\n";
+    write(&chapter.join("src/plane_through_points.rs"), normal);
+    write(&chapter.join("exercise/plane_through_points.rs"), normal);
+    write(
+        &chapter.join("tests/line_through_points.rs"),
+        "#[test]\n\
+         fn slope_of_a_diagonal() {\n\
+         \x20   assert_eq!(ch01::slope((0.0, 0.0), (2.0, 2.0)), 1.0);\n\
+         }\n",
+    );
+    write(
+        &chapter.join("tests/plane_through_points.rs"),
+        "#[test]\n\
+         fn normal_of_the_xy_plane() {\n\
+         \x20   assert_eq!(ch01::normal_z((1.0, 0.0), (0.0, 1.0)), 1.0);\n\
+         }\n",
+    );
+    root
+}
+
+/// An endless loop in a stub is stopped at `--timeout` and named; the other
+/// exercise is still judged.
+#[test]
+fn an_endless_loop_times_out() {
+    let root = looping_workspace();
+    let target = root.join("target");
+    let (ok, report, stderr) = raystep(
+        &[
+            "ch01",
+            "--timeout",
+            "3",
+            "--target-dir",
+            target.to_str().unwrap(),
+        ],
+        &root,
+        |_| {},
+    );
+    assert_eq!(
+        verdict(&report, &stderr, "line_through_points"),
+        "timed out after 3 s (still running: slope_of_a_diagonal)",
+        "{report}{stderr}"
+    );
+    assert_eq!(
+        verdict(&report, &stderr, "plane_through_points"),
+        "passed",
+        "{report}{stderr}"
+    );
+    assert!(
+        report.contains("other tests           1 passed, 0 failed"),
+        "{report}"
+    );
+    assert!(
+        !ok,
+        "a timed-out exercise must fail the check:\n{report}{stderr}"
+    );
 }
