@@ -62,13 +62,13 @@ const LIST_LIMIT: Duration = Duration::from_secs(10);
 /// Runs `raystep check`.
 pub fn run(options: &Options) -> Result<ExitCode, Error> {
     let root = workspace::root();
-    let chapters = workspace::chapters(&root)?;
-    let chapter = workspace::resolve(&options.chapter, &chapters, |c| &c.id)?;
-    let exercises = chapter.exercises()?;
+    let chapter = crate::chapters::find(&options.chapter, crate::chapters::CHAPTERS)?;
+    let dir = root.join("chapters").join(chapter.package);
+    let exercises: Vec<String> = chapter.exercises.iter().map(|e| e.to_string()).collect();
     let sources: HashMap<String, String> = exercises
         .iter()
         .filter_map(|e| {
-            let path = chapter.dir.join("tests").join(format!("{e}.rs"));
+            let path = dir.join("tests").join(format!("{e}.rs"));
             Some((e.clone(), std::fs::read_to_string(path).ok()?))
         })
         .collect();
@@ -85,7 +85,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         );
     }
     let cargo = cargo_program();
-    let built = build(&cargo, &root, &chapter.package, options)?;
+    let built = build(&cargo, &root, chapter.package, options)?;
 
     println!("{} ({mode})", chapter.package);
     let executables = match built {
