@@ -29,6 +29,8 @@ use std::process::{Child, Command, ExitCode, ExitStatus, Stdio};
 use std::sync::{Arc, Mutex, mpsc};
 use std::time::{Duration, Instant};
 
+use serde::Deserialize;
+
 use crate::{Error, workspace};
 
 /// What `raystep check` was asked to do.
@@ -231,6 +233,31 @@ impl Executable {
     }
 }
 
+/// The fields of one of cargo's JSON messages that name a built target
+/// (`"reason": "compiler-artifact"`); the rest are ignored.
+#[derive(Deserialize)]
+struct Artifact {
+    reason: String,
+    profile: Option<ArtifactProfile>,
+    executable: Option<PathBuf>,
+    manifest_path: Option<PathBuf>,
+    target: Option<ArtifactTarget>,
+}
+
+/// Was the artifact built with the test profile?
+#[derive(Deserialize)]
+struct ArtifactProfile {
+    test: bool,
+}
+
+/// Which target an artifact was built from.
+#[derive(Deserialize)]
+struct ArtifactTarget {
+    kind: Vec<String>,
+    name: String,
+    src_path: PathBuf,
+}
+
 /// The test executables named in the JSON messages of `cargo test --no-run
 /// --message-format=json…` (one per line on its stdout), in the order
 /// `raystep check` runs them: the library's unit tests, the binaries' unit
@@ -242,41 +269,23 @@ impl Executable {
 pub fn test_executables(messages: &str) -> Vec<Executable> {
     let mut found: Vec<(u8, String, Executable)> = Vec::new();
     for line in messages.lines() {
-        let Some(message) = json::parse(line) else {
+        // other messages (build scripts, diagnostics) lack these fields
+        let Ok(artifact) = serde_json::from_str::<Artifact>(line) else {
             continue;
         };
-        if message.get("reason").and_then(json::Value::as_str) != Some("compiler-artifact")
-            || message.get("profile").and_then(|p| p.get("test")) != Some(&json::Value::Bool(true))
-        {
+        let (Some(path), Some(manifest_path), Some(target)) =
+            (artifact.executable, artifact.manifest_path, artifact.target)
+        else {
+            continue;
+        };
+        if artifact.reason != "compiler-artifact" || !artifact.profile.is_some_and(|p| p.test) {
             continue;
         }
-        let (Some(path), Some(manifest_path), Some(target)) = (
-            message.get("executable").and_then(json::Value::as_str),
-            message.get("manifest_path").and_then(json::Value::as_str),
-            message.get("target"),
-        ) else {
-            continue;
-        };
-        let kinds: Vec<&str> = target
-            .get("kind")
-            .and_then(json::Value::as_array)
-            .unwrap_or_default()
-            .iter()
-            .filter_map(json::Value::as_str)
-            .collect();
-        let name = target
-            .get("name")
-            .and_then(json::Value::as_str)
-            .unwrap_or("");
-        let source = target
-            .get("src_path")
-            .and_then(json::Value::as_str)
-            .unwrap_or(name);
-        let manifest_path = PathBuf::from(manifest_path);
+        let kinds: Vec<&str> = target.kind.iter().map(String::as_str).collect();
+        let name = target.name;
+        let source = target.src_path;
         let package_dir = manifest_path.parent().unwrap_or(Path::new(""));
-        let relative = Path::new(source)
-            .strip_prefix(package_dir)
-            .unwrap_or(Path::new(source));
+        let relative = source.strip_prefix(package_dir).unwrap_or(&source);
         let relative = relative.to_string_lossy().replace('\\', "/");
         let (rank, target) = if kinds.contains(&"test") {
             (2, Target::Test(test_stem(&relative)))
@@ -287,11 +296,10 @@ pub fn test_executables(messages: &str) -> Vec<Executable> {
         } else {
             (0, Target::Unit(relative))
         };
-        let path = PathBuf::from(path);
         if found.iter().all(|(_, _, e)| e.path != path) {
             found.push((
                 rank,
-                name.to_string(),
+                name,
                 Executable {
                     target,
                     path,
@@ -1163,254 +1171,6 @@ fn verdict(exercise: &str, binaries: &[&TestBinary], source: Option<&str>) -> Ve
 /// `name: first line of the panic`.
 fn describe(name: &str, why: Option<&str>) -> String {
     format!("{name}: {}", why.unwrap_or("failed (no panic message)"))
-}
-
-/// Just enough JSON to read cargo's messages (one value per line), so that
-/// raystep needs no JSON dependency.
-mod json {
-    /// A JSON value. Objects keep their members in order.
-    #[derive(Debug, Clone, PartialEq)]
-    pub enum Value {
-        Null,
-        Bool(bool),
-        Number(f64),
-        String(String),
-        Array(Vec<Value>),
-        Object(Vec<(String, Value)>),
-    }
-
-    impl Value {
-        /// The member `key` of an object.
-        pub fn get(&self, key: &str) -> Option<&Value> {
-            match self {
-                Value::Object(members) => members.iter().find(|(k, _)| k == key).map(|(_, v)| v),
-                _ => None,
-            }
-        }
-
-        pub fn as_str(&self) -> Option<&str> {
-            match self {
-                Value::String(s) => Some(s),
-                _ => None,
-            }
-        }
-
-        pub fn as_array(&self) -> Option<&[Value]> {
-            match self {
-                Value::Array(items) => Some(items),
-                _ => None,
-            }
-        }
-    }
-
-    /// Parses one JSON value (surrounded by whitespace at most); `None` if
-    /// `text` is anything else.
-    pub fn parse(text: &str) -> Option<Value> {
-        let mut parser = Parser { text, at: 0 };
-        let value = parser.value(0)?;
-        parser.skip_whitespace();
-        (parser.at == text.len()).then_some(value)
-    }
-
-    /// Deeper nesting is refused rather than overflowing the stack.
-    const MAX_DEPTH: usize = 128;
-
-    struct Parser<'a> {
-        text: &'a str,
-        at: usize,
-    }
-
-    impl Parser<'_> {
-        fn peek(&self) -> Option<u8> {
-            self.text.as_bytes().get(self.at).copied()
-        }
-
-        fn skip_whitespace(&mut self) {
-            while matches!(self.peek(), Some(b' ' | b'\t' | b'\n' | b'\r')) {
-                self.at += 1;
-            }
-        }
-
-        fn eat(&mut self, literal: &str) -> Option<()> {
-            self.text[self.at..].starts_with(literal).then(|| {
-                self.at += literal.len();
-            })
-        }
-
-        fn value(&mut self, depth: usize) -> Option<Value> {
-            if depth > MAX_DEPTH {
-                return None;
-            }
-            self.skip_whitespace();
-            match self.peek()? {
-                b'n' => self.eat("null").map(|()| Value::Null),
-                b't' => self.eat("true").map(|()| Value::Bool(true)),
-                b'f' => self.eat("false").map(|()| Value::Bool(false)),
-                b'"' => self.string().map(Value::String),
-                b'[' => {
-                    self.at += 1;
-                    let mut items = Vec::new();
-                    self.skip_whitespace();
-                    if self.eat("]").is_some() {
-                        return Some(Value::Array(items));
-                    }
-                    loop {
-                        items.push(self.value(depth + 1)?);
-                        self.skip_whitespace();
-                        if self.eat("]").is_some() {
-                            return Some(Value::Array(items));
-                        }
-                        self.eat(",")?;
-                    }
-                }
-                b'{' => {
-                    self.at += 1;
-                    let mut members = Vec::new();
-                    self.skip_whitespace();
-                    if self.eat("}").is_some() {
-                        return Some(Value::Object(members));
-                    }
-                    loop {
-                        self.skip_whitespace();
-                        let key = self.string()?;
-                        self.skip_whitespace();
-                        self.eat(":")?;
-                        members.push((key, self.value(depth + 1)?));
-                        self.skip_whitespace();
-                        if self.eat("}").is_some() {
-                            return Some(Value::Object(members));
-                        }
-                        self.eat(",")?;
-                    }
-                }
-                b'-' | b'0'..=b'9' => self.number(),
-                _ => None,
-            }
-        }
-
-        fn number(&mut self) -> Option<Value> {
-            let start = self.at;
-            while matches!(
-                self.peek(),
-                Some(b'-' | b'+' | b'.' | b'e' | b'E' | b'0'..=b'9')
-            ) {
-                self.at += 1;
-            }
-            let number = &self.text[start..self.at];
-            // Rust accepts a few spellings JSON does not ("1.", ".5" cannot start here).
-            if number.ends_with('.') || number.contains(".e") || number.contains(".E") {
-                return None;
-            }
-            number.parse().ok().map(Value::Number)
-        }
-
-        /// A string literal, the parser on its opening quote.
-        fn string(&mut self) -> Option<String> {
-            self.eat("\"")?;
-            let mut string = String::new();
-            loop {
-                let rest = &self.text[self.at..];
-                let end = rest.find(['"', '\\'])?;
-                if rest[..end].chars().any(|c| c < ' ') {
-                    return None;
-                }
-                string.push_str(&rest[..end]);
-                self.at += end + 1;
-                if rest.as_bytes()[end] == b'"' {
-                    return Some(string);
-                }
-                let escape = self.peek()?;
-                self.at += 1;
-                match escape {
-                    b'"' => string.push('"'),
-                    b'\\' => string.push('\\'),
-                    b'/' => string.push('/'),
-                    b'b' => string.push('\u{8}'),
-                    b'f' => string.push('\u{c}'),
-                    b'n' => string.push('\n'),
-                    b'r' => string.push('\r'),
-                    b't' => string.push('\t'),
-                    b'u' => {
-                        let unit = self.hex4()?;
-                        let code = if (0xD800..0xDC00).contains(&unit) {
-                            // A surrogate pair: `\ud83d\ude00`.
-                            self.eat("\\u")?;
-                            let low = self.hex4()?;
-                            if !(0xDC00..0xE000).contains(&low) {
-                                return None;
-                            }
-                            0x10000 + ((unit - 0xD800) << 10) + (low - 0xDC00)
-                        } else {
-                            unit
-                        };
-                        string.push(char::from_u32(code)?);
-                    }
-                    _ => return None,
-                }
-            }
-        }
-
-        fn hex4(&mut self) -> Option<u32> {
-            let digits = self.text.get(self.at..self.at + 4)?;
-            if !digits.bytes().all(|b| b.is_ascii_hexdigit()) {
-                return None;
-            }
-            self.at += 4;
-            u32::from_str_radix(digits, 16).ok()
-        }
-    }
-
-    #[cfg(test)]
-    mod tests {
-        use super::*;
-
-        #[test]
-        fn values_and_nesting() {
-            let value =
-                parse(r#" {"a": [1, -2.5e3, true, false, null], "b": {}, "c": []} "#).unwrap();
-            assert_eq!(
-                value.get("a"),
-                Some(&Value::Array(vec![
-                    Value::Number(1.0),
-                    Value::Number(-2500.0),
-                    Value::Bool(true),
-                    Value::Bool(false),
-                    Value::Null,
-                ]))
-            );
-            assert_eq!(value.get("b"), Some(&Value::Object(vec![])));
-            assert_eq!(value.get("c").and_then(Value::as_array), Some(&[][..]));
-            assert_eq!(value.get("d"), None);
-        }
-
-        #[test]
-        fn string_escapes() {
-            let value = parse(r#""a\"b\\c\/d\n\t\u00e9\ud83d\ude00 ü""#).unwrap();
-            assert_eq!(value.as_str(), Some("a\"b\\c/d\n\té😀 ü"));
-        }
-
-        #[test]
-        fn malformed_input_is_refused() {
-            for text in [
-                "",
-                "{",
-                r#"{"a" 1}"#,
-                r#"{"a": 1,}"#,
-                "[1 2]",
-                r#""unterminated"#,
-                r#""\x""#,
-                r#""\ud83d""#,
-                "\"tab\tinside\"",
-                "1.",
-                "nul",
-                "{} {}",
-                "   Compiling ch01 v0.1.0",
-            ] {
-                assert_eq!(parse(text), None, "{text:?}");
-            }
-            assert_eq!(parse(&"[".repeat(1000)), None);
-        }
-    }
 }
 
 #[cfg(test)]
