@@ -6,6 +6,11 @@
 //!
 //! L = ka·Ia + Σᵢ Sᵢ·Iᵢ·[kd·(N·Lᵢ) + ks·(Rᵢ·V)^p] (+ kr·Lr + kt·Lt later).
 //!
+//! "For each object" is [`BruteForce`], the first implementation of the
+//! world's [`Accelerator`]: the tracer asks [`World::closest_hit`], and
+//! the speed-up chapters answer the same question faster. [`world`] builds
+//! a scene file's world from the shapes taught so far.
+//!
 //! Student mode: with the feature `exercise` the modules marked below are
 //! replaced by the stubs in `exercise/`.
 
