@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 use std::path::Path;
 
-use raystep_core::DVec3;
+use raystep_core::{Aabb, DVec3};
 use thiserror::Error;
 
 /// Triangles sharing vertices: each triangle is three indices into
@@ -160,11 +160,15 @@ impl Mesh {
         self.triangles[k].map(|i| self.vertices[i])
     }
 
+    /// The box around every vertex (so around every triangle).
+    pub fn bounds(&self) -> Aabb {
+        Aabb::around(self.vertices.iter().copied())
+    }
+
     /// The mesh moved and scaled so that its bounding box is centred on
     /// `centre` and its largest side is `size`.
     pub fn fitted(&self, centre: DVec3, size: f64) -> Mesh {
-        let lo = self.vertices.iter().fold(DVec3::MAX, |a, &v| a.min(v));
-        let hi = self.vertices.iter().fold(DVec3::MIN, |a, &v| a.max(v));
+        let Aabb { min: lo, max: hi } = self.bounds();
         let scale = size / (hi - lo).max_element();
         let middle = (lo + hi) / 2.0;
         Mesh {
@@ -207,6 +211,7 @@ mod tests {
         let mesh = Mesh::icosphere(1).fitted(DVec3::new(1.0, 2.0, 3.0), 0.5);
         let lo = mesh.vertices.iter().fold(DVec3::MAX, |a, &v| a.min(v));
         let hi = mesh.vertices.iter().fold(DVec3::MIN, |a, &v| a.max(v));
+        assert_eq!(mesh.bounds(), Aabb { min: lo, max: hi });
         assert!(((lo + hi) / 2.0 - DVec3::new(1.0, 2.0, 3.0)).length() < 1e-12);
         assert!(((hi - lo).max_element() - 0.5).abs() < 1e-12);
     }
