@@ -1,7 +1,7 @@
 //! Chapter 01 — implicit lines and planes: the lecture's figures, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
-mod figures;
+mod diagrams;
 
 use raystep_figure::Chapter;
 
@@ -11,7 +11,7 @@ pub const CHAPTER: Chapter = Chapter {
     title: "Implicit lines and planes",
     package: "ch01-implicit-lines-planes",
     exercises: &["line_through_points", "plane_through_points"],
-    figures: figures::all,
+    figures: diagrams::all,
     charts: &[],
     measurements: &[],
     renderer: None,

@@ -1,7 +1,7 @@
 //! Chapter 02 — plane and polygon hits: the lecture's figures, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
-mod figures;
+mod diagrams;
 
 use raystep_figure::Chapter;
 
@@ -11,7 +11,7 @@ pub const CHAPTER: Chapter = Chapter {
     title: "Plane and polygon hits",
     package: "ch02-plane-polygon-hits",
     exercises: &["ray_plane", "inside_polygon"],
-    figures: figures::all,
+    figures: diagrams::all,
     charts: &[],
     measurements: &[],
     renderer: None,

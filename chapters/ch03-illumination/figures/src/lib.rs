@@ -1,7 +1,7 @@
 //! Chapter 03 — illumination: the lecture's figures, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
-mod figures;
+mod diagrams;
 
 use raystep_figure::Chapter;
 use raystep_render::{Image, RenderOptions};
@@ -13,7 +13,7 @@ pub const CHAPTER: Chapter = Chapter {
     title: "Illumination",
     package: "ch03-illumination",
     exercises: &["sphere_hit", "reflect", "local_shading"],
-    figures: figures::all,
+    figures: diagrams::all,
     charts: &[],
     measurements: &[],
     renderer: Some(render),

@@ -1,9 +1,9 @@
 //! Chapter 04 — shadows: the lecture's figures, charts and measurements, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
-mod chart;
-mod figures;
-pub mod measure;
+mod charts;
+mod diagrams;
+pub mod measurements;
 
 use raystep_figure::{Chapter, Measurement};
 use raystep_render::csv::to_csv;
@@ -16,13 +16,13 @@ pub const CHAPTER: Chapter = Chapter {
     title: "Shadows",
     package: "ch04-shadows",
     exercises: &["shadow", "normal_offset"],
-    figures: figures::all,
-    charts: &[chart::acne_chart],
+    figures: diagrams::all,
+    charts: &[charts::acne_chart],
     measurements: &[Measurement {
         what: "ch04 acne",
         file: "acne.csv",
-        steps: |_| (measure::CHART_STRATEGIES.len() * measure::CHART_SCALES.len()) as u64,
-        run: |repeats, step| Ok(to_csv(&measure::measure_acne(repeats, step))),
+        steps: |_| (measurements::CHART_STRATEGIES.len() * measurements::CHART_SCALES.len()) as u64,
+        run: |repeats, step| Ok(to_csv(&measurements::measure_acne(repeats, step))),
     }],
     renderer: Some(render),
 };

@@ -1,9 +1,9 @@
 //! Chapter 05 — reflection: the lecture's figures, charts and measurements, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
-mod chart;
-mod figures;
-pub mod measure;
+mod charts;
+mod diagrams;
+pub mod measurements;
 
 use raystep_figure::{Chapter, Measurement};
 use raystep_render::csv::to_csv;
@@ -16,13 +16,13 @@ pub const CHAPTER: Chapter = Chapter {
     title: "Reflection",
     package: "ch05-reflection",
     exercises: &["reflection", "recursion"],
-    figures: figures::all,
-    charts: &[chart::stopping_chart],
+    figures: diagrams::all,
+    charts: &[charts::stopping_chart],
     measurements: &[Measurement {
         what: "ch05 stopping",
         file: "stopping.csv",
-        steps: |rounds| (measure::CHART_SCENES.len() * rounds) as u64,
-        run: |repeats, step| Ok(to_csv(&measure::measure_stopping(repeats, step))),
+        steps: |rounds| (measurements::CHART_SCENES.len() * rounds) as u64,
+        run: |repeats, step| Ok(to_csv(&measurements::measure_stopping(repeats, step))),
     }],
     renderer: Some(render),
 };

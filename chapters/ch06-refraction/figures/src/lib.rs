@@ -1,9 +1,9 @@
 //! Chapter 06 — refraction: the lecture's figures, charts and measurements, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
-mod chart;
-mod figures;
-pub mod measure;
+mod charts;
+mod diagrams;
+pub mod measurements;
 
 use raystep_figure::{Chapter, Measurement};
 use raystep_render::csv::to_csv;
@@ -16,13 +16,13 @@ pub const CHAPTER: Chapter = Chapter {
     title: "Refraction",
     package: "ch06-refraction",
     exercises: &["refraction", "schlick"],
-    figures: figures::all,
-    charts: &[figures::reflectance_chart, chart::fresnel_chart],
+    figures: diagrams::all,
+    charts: &[diagrams::reflectance_chart, charts::fresnel_chart],
     measurements: &[Measurement {
         what: "ch06 fresnel",
         file: "fresnel.csv",
         steps: |_| ch06::REFRACTIVE_INDICES.len() as u64,
-        run: |repeats, step| Ok(to_csv(&measure::measure_fresnel(repeats, step))),
+        run: |repeats, step| Ok(to_csv(&measurements::measure_fresnel(repeats, step))),
     }],
     renderer: Some(render),
 };

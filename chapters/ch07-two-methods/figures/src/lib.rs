@@ -1,9 +1,9 @@
 //! Chapter 07 — two rendering methods: the lecture's figures, charts and measurements, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
-mod chart;
-mod figures;
-pub mod measure;
+mod charts;
+mod diagrams;
+pub mod measurements;
 
 use raystep_figure::{Chapter, Measurement};
 use raystep_render::csv::to_csv;
@@ -16,13 +16,13 @@ pub const CHAPTER: Chapter = Chapter {
     title: "Two rendering methods",
     package: "ch07-two-methods",
     exercises: &["coverage", "depth_test"],
-    figures: figures::all,
-    charts: &[chart::scaling_chart],
+    figures: diagrams::all,
+    charts: &[charts::scaling_chart],
     measurements: &[Measurement {
         what: "ch07 scaling",
         file: "scaling.csv",
-        steps: measure::steps,
-        run: |repeats, step| Ok(to_csv(&measure::measure_scaling(repeats, step)?)),
+        steps: measurements::steps,
+        run: |repeats, step| Ok(to_csv(&measurements::measure_scaling(repeats, step)?)),
     }],
     renderer: Some(render),
 };

@@ -6,7 +6,7 @@ use raystep_figure::plotters::prelude::*;
 use raystep_figure::plotters::style::text_anchor::{HPos, Pos, VPos};
 use raystep_figure::{ChartError, Figure, chart, measured};
 
-use crate::measure::{CHART_SCENES, CONTRIBUTION_RULE, DEPTH_RULE, StopRow};
+use crate::measurements::{CHART_SCENES, CONTRIBUTION_RULE, DEPTH_RULE, StopRow};
 
 /// Errors below this are drawn at the chart's floor (log axes have no 0).
 const FLOOR: f64 = 0.01;

@@ -9,7 +9,7 @@ use raystep_figure::palette::role;
 use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette};
 use raystep_render::{RenderOptions, image_error};
 
-use crate::measure::{REFERENCE, chart_world};
+use crate::measurements::{REFERENCE, chart_world};
 use ch05::{
     Cut, DEFAULT_STOP, Interval, LoggedRay, Ray, Stop, World, pixel_tree, reflect_ray, render,
 };

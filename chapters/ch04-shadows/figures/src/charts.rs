@@ -4,7 +4,7 @@
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::{ChartError, Figure, chart, measured};
 
-use crate::measure::{AcneRow, CHART_STRATEGIES};
+use crate::measurements::{AcneRow, CHART_STRATEGIES};
 
 /// Fractions below this are drawn at the chart's floor (log axes have no 0).
 const FLOOR: f64 = 1e-4;

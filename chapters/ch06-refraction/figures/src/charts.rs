@@ -6,7 +6,7 @@ use raystep_figure::numbers::floored;
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::{ChartError, Figure, chart, measured};
 
-use crate::measure::{CHART_MODES, FresnelRow};
+use crate::measurements::{CHART_MODES, FresnelRow};
 
 /// Errors below this are drawn at the chart's floor (log axes have no 0).
 const FLOOR: f64 = 0.01;

@@ -11,7 +11,7 @@ use raystep_figure::palette::role;
 use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, camera_pixel, palette};
 use raystep_render::{Image, RenderOptions};
 
-use crate::measure::MATERIALS_SCENE;
+use crate::measurements::MATERIALS_SCENE;
 use ch06::{
     CAMERA_MEDIUM, DEFAULT_STOP, Fresnel, Interval, Media, REFRACTIVE_INDICES, Ray, World,
     critical_angle, refract, render,
@@ -24,7 +24,7 @@ pub fn all() -> Vec<Figure> {
 
 /// The reflectance curves of the lecture's materials, exact and by
 /// Schlick (a chart of computed values; the measured one is
-/// [`crate::chart::fresnel_chart`]).
+/// [`crate::charts::fresnel_chart`]).
 pub fn reflectance_chart() -> Result<Figure, raystep_figure::ChartError> {
     reflectance::chart()
 }
@@ -461,7 +461,7 @@ mod reflectance {
                 .light_line_style(WHITE)
                 .draw()?;
             for (name, colour) in CURVES {
-                let n = crate::figures::index_of(name);
+                let n = crate::diagrams::index_of(name);
                 let (n_theta, n_phi) = if entering {
                     (CAMERA_MEDIUM, n)
                 } else {

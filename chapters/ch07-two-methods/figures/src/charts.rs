@@ -8,7 +8,7 @@ use raystep_figure::plotters::prelude::*;
 use raystep_figure::plotters::style::text_anchor::{HPos, Pos, VPos};
 use raystep_figure::{ChartError, Figure, book_figures, chart, measured};
 
-use crate::measure::{CHART_SIZE, RASTERIZE, RAYCAST, ScalingRow};
+use crate::measurements::{CHART_SIZE, RASTERIZE, RAYCAST, ScalingRow};
 
 /// The scene of the bunny in the CSV: drawn apart, and left out of the fits.
 const BUNNY: &str = "bunny";
@@ -444,7 +444,7 @@ mod tests {
     fn the_chart_draws_from_the_committed_csv() {
         let rows: Vec<ScalingRow> =
             measured("ch07", "scaling.csv").expect("the committed scaling.csv");
-        let scenes = crate::measure::chart_scenes();
+        let scenes = crate::measurements::chart_scenes();
         assert_eq!(rows.len(), 2 * scenes.len());
         for (pair, scene) in rows.chunks(2).zip(&scenes) {
             assert_eq!(pair[0].scene, scene.name());
