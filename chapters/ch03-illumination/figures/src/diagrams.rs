@@ -24,15 +24,15 @@ fn spheres_scene() -> Scene {
     raystep_scene::load(&path).expect("the chapter's scene loads")
 }
 
-/// The chapter's scene, as `raystep render` reads it.
-fn spheres() -> World {
-    ch03::world(&spheres_scene(), "spheres.toml").expect("the chapter's scene builds")
+/// The world of the chapter's scene, as `raystep render` builds it.
+fn spheres_world(scene: &Scene) -> World {
+    ch03::world(scene, "spheres.toml").expect("the chapter's scene builds")
 }
 
 /// For each pixel: shoot a ray, find the closest hit, shade it. A side view of the real camera.
 fn basic_idea() -> Figure {
     let scene = spheres_scene();
-    let world = spheres();
+    let world = spheres_world(&scene);
     let camera = world.camera;
     // the middle column of a 10-row image (u = 1/2): its rays lie in the vertical plane of the eye
     let rows = 10;
@@ -258,10 +258,10 @@ fn refract(d: DVec3, normal: DVec3, n: f64) -> Option<DVec3> {
 
 /// At one primary hit of the scene: the shadow rays, the reflected ray and the refracted ray.
 fn other_rays() -> Figure {
-    let world = spheres();
+    let scene = spheres_scene();
+    let world = spheres_world(&scene);
     // a pixel that sees the floor where one light is blocked
     let ray = world.camera.pixel_ray(155, 115, world.width, world.height);
-    let scene = spheres_scene();
     let (object, hit) = world
         .closest_hit(&ray, Interval::FORWARD)
         .expect("the pixel sees the floor");
@@ -410,7 +410,7 @@ fn other_rays() -> Figure {
 
 /// The scene with each term of the local model on its own, and their sum.
 fn terms() -> Figure {
-    let mut world = spheres();
+    let mut world = spheres_world(&spheres_scene());
     (world.width, world.height) = (208, 117);
     let term = |pick: fn(&ShadingTerms) -> DVec3| {
         render_with(&world, &RenderOptions::QUIET, |ray| {
