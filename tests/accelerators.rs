@@ -72,7 +72,12 @@ impl Accelerator for BoxedList {
         closest
     }
 
-    fn any_hit(&self, objects: &[Object], ray: &Ray, interval: Interval) -> bool {
+    fn any_hit(
+        &self,
+        objects: &[Object],
+        ray: &Ray,
+        interval: Interval,
+    ) -> bool {
         self.any_asked.fetch_add(1, Ordering::Relaxed);
         (0..objects.len()).any(|index| {
             !self.misses(index, ray, interval)
@@ -122,9 +127,11 @@ const QUIET: RenderOptions = RenderOptions {
 /// Every tracer of chapters 03–06, as the command line runs it, and the
 /// counts it keeps (rays, wrong shadows) as text.
 fn every_tracer(world: &World) -> Vec<(&'static str, Image, String)> {
-    let (ch05_image, ch05_counts) = ch05::render(world, &ch05::DEFAULT_STOP, &QUIET).unwrap();
+    let (ch05_image, ch05_counts) =
+        ch05::render(world, &ch05::DEFAULT_STOP, &QUIET).unwrap();
     let (ch06_image, ch06_counts) =
-        ch06::render(world, &ch05::DEFAULT_STOP, ch06::Fresnel::Exact, &QUIET).unwrap();
+        ch06::render(world, &ch05::DEFAULT_STOP, ch06::Fresnel::Exact, &QUIET)
+            .unwrap();
     vec![
         (
             "ch03",
@@ -134,7 +141,10 @@ fn every_tracer(world: &World) -> Vec<(&'static str, Image, String)> {
         (
             "ch04",
             ch04::render(world, ch04::Offset::ScaleAware, &QUIET).unwrap(),
-            format!("{:?}", ch04::shadow_errors(world, ch04::Offset::TMin(0.0))),
+            format!(
+                "{:?}",
+                ch04::shadow_errors(world, ch04::Offset::TMin(0.0))
+            ),
         ),
         ("ch05", ch05_image, format!("{ch05_counts:?}")),
         ("ch06", ch06_image, format!("{ch06_counts:?}")),
@@ -151,7 +161,9 @@ fn every_tracer_gives_the_same_bytes_on_a_second_collection() {
         let expected = every_tracer(&list);
         let before = boxed.skipped.load(Ordering::Relaxed);
         let actual = every_tracer(&boxed_world);
-        for ((name, a, a_counts), (_, b, b_counts)) in expected.iter().zip(&actual) {
+        for ((name, a, a_counts), (_, b, b_counts)) in
+            expected.iter().zip(&actual)
+        {
             assert_eq!(
                 a.to_srgb8(),
                 b.to_srgb8(),
@@ -175,7 +187,11 @@ fn every_tracer_gives_the_same_bytes_on_a_second_collection() {
 /// Each ray a tracer counts is one question to the collection: a primary
 /// or secondary ray one closest-hit question, a shadow ray one any-hit
 /// question. A tracer that kept a loop of its own would ask fewer.
-fn every_ray_goes_through_the_seam(world: &World, boxed: &BoxedList, path: &Path) {
+fn every_ray_goes_through_the_seam(
+    world: &World,
+    boxed: &BoxedList,
+    path: &Path,
+) {
     let pixels = u64::from(world.width * world.height);
     let _ = boxed.asked();
     ch03::render(world, ch03::Terms::All, &QUIET).unwrap();
@@ -192,7 +208,9 @@ fn every_ray_goes_through_the_seam(world: &World, boxed: &BoxedList, path: &Path
         "ch05 on {}",
         path.display()
     );
-    let (_, c) = ch06::render(world, &ch05::DEFAULT_STOP, ch06::Fresnel::Exact, &QUIET).unwrap();
+    let (_, c) =
+        ch06::render(world, &ch05::DEFAULT_STOP, ch06::Fresnel::Exact, &QUIET)
+            .unwrap();
     let asked = boxed.asked();
     let traced = c.primary + c.reflected + c.transmitted;
     assert_eq!(asked, (traced, c.shadow), "ch06 on {}", path.display());
@@ -238,11 +256,15 @@ fn closest_and_any_hit_agree_on_seeded_rays() {
             );
             let same_closest = match (a, b) {
                 (None, None) => true,
-                (Some((i, h)), Some((j, k))) => i == j && h.t.to_bits() == k.t.to_bits(),
+                (Some((i, h)), Some((j, k))) => {
+                    i == j && h.t.to_bits() == k.t.to_bits()
+                }
                 _ => false,
             };
-            let same_any = list.any_hit(&ray, interval) == boxed.any_hit(&ray, interval);
-            disagreements += usize::from(!same_closest) + usize::from(!same_any);
+            let same_any =
+                list.any_hit(&ray, interval) == boxed.any_hit(&ray, interval);
+            disagreements +=
+                usize::from(!same_closest) + usize::from(!same_any);
             rays += 1;
         }
     }

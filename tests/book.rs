@@ -119,7 +119,8 @@ fn includes(line: &str) -> Vec<(&str, &str)> {
         let after = &rest[start + 3..];
         let Some(end) = after.find("}}") else { break };
         let body = after[..end].trim();
-        let (directive, argument) = body.split_once(char::is_whitespace).unwrap_or((body, ""));
+        let (directive, argument) =
+            body.split_once(char::is_whitespace).unwrap_or((body, ""));
         if !escaped && matches!(directive, "include" | "rustdoc_include") {
             found.push((directive, argument.trim()));
         }
@@ -130,7 +131,11 @@ fn includes(line: &str) -> Vec<(&str, &str)> {
 }
 
 /// Checks `path`, `path:anchor`, `path:N`, `path:N:M`, `path::M`, `path:N:`.
-fn check_include(dir: &Path, argument: &str, files: &dyn Files) -> Result<(), String> {
+fn check_include(
+    dir: &Path,
+    argument: &str,
+    files: &dyn Files,
+) -> Result<(), String> {
     let (path, selector) = argument.split_once(':').unwrap_or((argument, ""));
     if path.is_empty() {
         return Err("no file named".into());
@@ -154,7 +159,9 @@ fn check_include(dir: &Path, argument: &str, files: &dyn Files) -> Result<(), St
             Err(format!("{path} has only {lines} lines"))
         };
     }
-    let has = |marker: &str| text.lines().any(|l| anchor_of(l, marker) == Some(selector));
+    let has = |marker: &str| {
+        text.lines().any(|l| anchor_of(l, marker) == Some(selector))
+    };
     match (has("ANCHOR:"), has("ANCHOR_END:")) {
         (true, true) => Ok(()),
         (false, false) => Err(format!("no anchor `{selector}` in {path}")),
@@ -244,7 +251,8 @@ fn markdown_files(dir: &Path) -> Vec<PathBuf> {
     let mut found = Vec::new();
     let mut stack = vec![dir.to_path_buf()];
     while let Some(dir) = stack.pop() {
-        let entries = fs::read_dir(&dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display()));
+        let entries = fs::read_dir(&dir)
+            .unwrap_or_else(|e| panic!("{}: {e}", dir.display()));
         for entry in entries {
             let path = entry.expect("directory entry").path();
             if path.is_dir() {
@@ -270,11 +278,14 @@ fn every_include_link_and_figure_of_the_book_resolves() {
     );
     let mut all = Vec::new();
     for page in markdown_files(&src) {
-        let text = fs::read_to_string(&page).unwrap_or_else(|e| panic!("{}: {e}", page.display()));
+        let text = fs::read_to_string(&page)
+            .unwrap_or_else(|e| panic!("{}: {e}", page.display()));
         let shown = page.strip_prefix(&root).unwrap_or(&page);
-        all.extend(problems(&page, &text, &Disk).into_iter().map(|p| Problem {
-            file: shown.to_path_buf(),
-            ..p
+        all.extend(problems(&page, &text, &Disk).into_iter().map(|p| {
+            Problem {
+                file: shown.to_path_buf(),
+                ..p
+            }
         }));
     }
     let listed: Vec<String> = all.iter().map(Problem::to_string).collect();
@@ -323,7 +334,8 @@ mod parsing {
 
     #[test]
     fn a_missing_anchor_is_reported_with_file_and_line() {
-        let page = "intro\n\n{{#include ../../chapters/ch01/src/line.rs:plane}}\n";
+        let page =
+            "intro\n\n{{#include ../../chapters/ch01/src/line.rs:plane}}\n";
         assert_eq!(
             check(page),
             [
@@ -358,8 +370,7 @@ mod parsing {
 
     #[test]
     fn a_missing_figure_is_reported_with_file_and_line() {
-        let page =
-            "one\ntwo\n![plane](figures/ch01/plane.svg)\n<img src=\"figures/ch01/plane.png\">";
+        let page = "one\ntwo\n![plane](figures/ch01/plane.svg)\n<img src=\"figures/ch01/plane.png\">";
         assert_eq!(
             check(page),
             [
@@ -371,11 +382,13 @@ mod parsing {
 
     #[test]
     fn a_missing_chapter_page_in_the_summary_is_reported() {
-        let summary = "# Summary\n\n- [Lines](ch01.md)\n- [Hits](ch02.md)\n- [Draft]()\n";
-        let found: Vec<String> = problems(Path::new("book/src/SUMMARY.md"), summary, &files())
-            .iter()
-            .map(Problem::to_string)
-            .collect();
+        let summary =
+            "# Summary\n\n- [Lines](ch01.md)\n- [Hits](ch02.md)\n- [Draft]()\n";
+        let found: Vec<String> =
+            problems(Path::new("book/src/SUMMARY.md"), summary, &files())
+                .iter()
+                .map(Problem::to_string)
+                .collect();
         assert_eq!(
             found,
             ["book/src/SUMMARY.md:4: chapter page ch02.md does not exist"]

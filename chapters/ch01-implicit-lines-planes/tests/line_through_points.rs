@@ -25,7 +25,8 @@ fn line_table() {
         ((0.5, -1.5), (0.5, 2.5)),
     ];
     let probes = [DVec2::ZERO, DVec2::new(1.0, 2.0), DVec2::new(-3.0, 1.0)];
-    let mut table = Table::new(&["P0", "P1", "V", "N", "c", "f(0,0)", "f(1,2)", "f(-3,1)"]);
+    let mut table =
+        Table::new(&["P0", "P1", "V", "N", "c", "f(0,0)", "f(1,2)", "f(-3,1)"]);
     for (p0, p1) in cases {
         let l = line(p0, p1).expect("a proper line");
         let f: Vec<String> = probes.iter().map(|&p| num(l.eval(p))).collect();

@@ -79,7 +79,8 @@ fn specific_errors() {
 }
 
 fn point() -> impl Strategy<Value = DVec3> {
-    (-100.0..100.0f64, -100.0..100.0f64, -100.0..100.0f64).prop_map(|(x, y, z)| v(x, y, z))
+    (-100.0..100.0f64, -100.0..100.0f64, -100.0..100.0f64)
+        .prop_map(|(x, y, z)| v(x, y, z))
 }
 
 proptest! {

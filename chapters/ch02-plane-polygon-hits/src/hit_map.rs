@@ -39,7 +39,11 @@ impl HitMap {
 // ANCHOR: closest_hit
 /// The closest hit of `ray` among `polygons` within `interval`, with the
 /// index of the polygon hit.
-pub fn closest_hit(polygons: &[Polygon], ray: &Ray, interval: Interval) -> Option<(usize, Hit)> {
+pub fn closest_hit(
+    polygons: &[Polygon],
+    ray: &Ray,
+    interval: Interval,
+) -> Option<(usize, Hit)> {
     let mut closest = None;
     let mut interval = interval;
     for (i, polygon) in polygons.iter().enumerate() {
@@ -55,12 +59,19 @@ pub fn closest_hit(polygons: &[Polygon], ray: &Ray, interval: Interval) -> Optio
 
 /// Casts one ray through the centre of every pixel of a `width × height`
 /// image and records the closest polygon.
-pub fn hit_map(polygons: &[Polygon], camera: &Camera, width: u32, height: u32) -> HitMap {
+pub fn hit_map(
+    polygons: &[Polygon],
+    camera: &Camera,
+    width: u32,
+    height: u32,
+) -> HitMap {
     let mut ids = Vec::with_capacity((width * height) as usize);
     for row in 0..height {
         for column in 0..width {
             let ray = camera.pixel_ray(column, row, width, height);
-            ids.push(closest_hit(polygons, &ray, Interval::FORWARD).map(|(i, _)| i));
+            ids.push(
+                closest_hit(polygons, &ray, Interval::FORWARD).map(|(i, _)| i),
+            );
         }
     }
     HitMap { width, height, ids }
@@ -99,7 +110,9 @@ pub fn demo_scene() -> Vec<Polygon> {
     ];
     polygons
         .into_iter()
-        .map(|vertices| Polygon::new(vertices).expect("the demo polygons are proper"))
+        .map(|vertices| {
+            Polygon::new(vertices).expect("the demo polygons are proper")
+        })
         .collect()
 }
 

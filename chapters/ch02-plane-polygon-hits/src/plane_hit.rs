@@ -29,7 +29,11 @@ impl RayPlane {
 }
 
 /// The hit of `ray` with `plane` within `interval`, if any.
-pub fn intersect_plane(plane: &Plane, ray: &Ray, interval: Interval) -> Option<Hit> {
+pub fn intersect_plane(
+    plane: &Plane,
+    ray: &Ray,
+    interval: Interval,
+) -> Option<Hit> {
     let t = ray_plane(plane, ray, interval).t()?;
     Some(Hit {
         t,

@@ -1,4 +1,6 @@
-use crate::{dominant_axis, inside_convex, inside_crossing, project, ray_plane};
+use crate::{
+    dominant_axis, inside_convex, inside_crossing, project, ray_plane,
+};
 use ch01::{Degenerate, Plane};
 use raystep_core::{Aabb, DVec2, DVec3, Hit, Interval, Ray, Shape};
 use thiserror::Error;
@@ -41,7 +43,8 @@ impl Polygon {
         // Drop the axis the normal points along most; make the outline
         // counter-clockwise so the edge test has one sign to look for.
         let axis = dominant_axis(plane.normal);
-        let mut outline: Vec<DVec2> = vertices.iter().map(|&v| project(v, axis)).collect();
+        let mut outline: Vec<DVec2> =
+            vertices.iter().map(|&v| project(v, axis)).collect();
         if signed_area(&outline) < 0.0 {
             outline.reverse();
         }
@@ -126,14 +129,16 @@ fn plane_of(vertices: &[DVec3]) -> Result<Plane, PolygonError> {
     for pair in vertices[1..].windows(2) {
         match Plane::through(v0, pair[0], pair[1]) {
             Ok(plane) => {
-                return Ok(if plane.normal.dot(newell_normal(vertices)) < 0.0 {
-                    Plane {
-                        normal: -plane.normal,
-                        d: -plane.d,
-                    }
-                } else {
-                    plane
-                });
+                return Ok(
+                    if plane.normal.dot(newell_normal(vertices)) < 0.0 {
+                        Plane {
+                            normal: -plane.normal,
+                            d: -plane.d,
+                        }
+                    } else {
+                        plane
+                    },
+                );
             }
             Err(e) => last_error = e,
         }
@@ -224,7 +229,11 @@ mod tests {
             Err(PolygonError::TooFewVertices(2))
         );
         assert_eq!(
-            Polygon::new(vec![v(0.0, 0.0, 0.0), v(1.0, 0.0, 0.0), v(2.0, 0.0, 0.0)]),
+            Polygon::new(vec![
+                v(0.0, 0.0, 0.0),
+                v(1.0, 0.0, 0.0),
+                v(2.0, 0.0, 0.0)
+            ]),
             Err(PolygonError::NoPlane(Degenerate::Collinear))
         );
         assert_eq!(

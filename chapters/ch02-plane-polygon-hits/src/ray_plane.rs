@@ -12,8 +12,12 @@ pub fn ray_plane(plane: &Plane, ray: &Ray, interval: Interval) -> RayPlane {
     let distance = plane.eval(ray.origin);
     // Step 3: N·D = 0 (within its rounding error): parallel. The ray lies
     // in the plane if its origin does, else it never meets it.
-    if zero_within_rounding(approach, plane.normal.abs().dot(ray.direction.abs())) {
-        let magnitude = plane.normal.abs().dot(ray.origin.abs()) + plane.d.abs();
+    if zero_within_rounding(
+        approach,
+        plane.normal.abs().dot(ray.direction.abs()),
+    ) {
+        let magnitude =
+            plane.normal.abs().dot(ray.origin.abs()) + plane.d.abs();
         return if zero_within_rounding(distance, magnitude) {
             RayPlane::InPlane
         } else {
@@ -22,7 +26,8 @@ pub fn ray_plane(plane: &Plane, ray: &Ray, interval: Interval) -> RayPlane {
     }
     // Step 4: t = −(N·P₀ + d) / (N·D).
     let t = -distance / approach;
-    // Step 5: only a t inside the interval is a hit (t < 0 is behind the origin).
+    // Step 5: only a t inside the interval is a hit (t < 0 is behind the
+    // origin).
     if interval.contains(t) {
         RayPlane::Hit(t)
     } else {

@@ -36,7 +36,8 @@ fn inside_table() {
         ("under the roof", p(3.0, 3.75)),
         ("over the roof", p(3.0, 4.25)),
     ];
-    let mut table = Table::new(&["point", "f1", "f2", "f3", "f4", "f5", "inside"]);
+    let mut table =
+        Table::new(&["point", "f1", "f2", "f3", "f4", "f5", "inside"]);
     for (name, q) in probes {
         let mut row = vec![name.to_string()];
         for i in 0..5 {
@@ -97,16 +98,20 @@ fn crossing_test_on_a_concave_l_either_way_round() {
 
 fn convex_polygon() -> impl Strategy<Value = Vec<DVec2>> {
     // points on a circle at sorted angles: convex and counter-clockwise
-    (3usize..8, 0.5..4.0f64, -3.0..3.0f64, -3.0..3.0f64).prop_flat_map(|(n, r, cx, cy)| {
-        proptest::collection::vec(0.0..std::f64::consts::TAU, n).prop_map(move |mut angles| {
-            angles.sort_by(f64::total_cmp);
-            angles.dedup_by(|a, b| (*a - *b).abs() < 1e-3);
-            angles
-                .into_iter()
-                .map(|a| p(cx + r * a.cos(), cy + r * a.sin()))
-                .collect()
-        })
-    })
+    (3usize..8, 0.5..4.0f64, -3.0..3.0f64, -3.0..3.0f64).prop_flat_map(
+        |(n, r, cx, cy)| {
+            proptest::collection::vec(0.0..std::f64::consts::TAU, n).prop_map(
+                move |mut angles| {
+                    angles.sort_by(f64::total_cmp);
+                    angles.dedup_by(|a, b| (*a - *b).abs() < 1e-3);
+                    angles
+                        .into_iter()
+                        .map(|a| p(cx + r * a.cos(), cy + r * a.sin()))
+                        .collect()
+                },
+            )
+        },
+    )
 }
 
 proptest! {

@@ -1,6 +1,9 @@
 //! Polygons in 3D: the hit map, shared edges and vertices, scale.
 //! These use both exercises (through `Polygon::intersect`).
-use ch02::{DVec2, DVec3, Interval, Polygon, Ray, closest_hit, demo_camera, demo_scene, hit_map};
+use ch02::{
+    DVec2, DVec3, Interval, Polygon, Ray, closest_hit, demo_camera, demo_scene,
+    hit_map,
+};
 use raystep_check::{Table, num, vec3};
 
 fn v(x: f64, y: f64, z: f64) -> DVec3 {
@@ -165,7 +168,9 @@ fn stable_from_1e_minus_6_to_1e6() {
         // a unit square tilted in z, scaled by s and moved to o
         let plane_point = |x: f64, y: f64| o + v(x, y, 0.2 * x + 0.5 * y) * s;
         let corners = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
-        let square = Polygon::new(corners.map(|(x, y)| plane_point(x, y)).to_vec()).unwrap();
+        let square =
+            Polygon::new(corners.map(|(x, y)| plane_point(x, y)).to_vec())
+                .unwrap();
         let eye = o + v(0.3, 0.4, 5.0) * s;
         for (x, y, inside) in [
             (0.5, 0.5, true),
@@ -179,7 +184,9 @@ fn stable_from_1e_minus_6_to_1e6() {
             checked += 1;
             let expected_t = (target - eye).length();
             let ok = match square.intersect(&ray, Interval::FORWARD) {
-                Some(hit) => inside && ((hit.t - expected_t) / expected_t).abs() < 1e-9,
+                Some(hit) => {
+                    inside && ((hit.t - expected_t) / expected_t).abs() < 1e-9
+                }
                 None => !inside,
             };
             if !ok {
@@ -207,8 +214,17 @@ fn chain_with_an_almost_straight_vertex() {
         let (a, b) = (v(x0, 0.0, 0.0), v(x1, 1.0, 0.0));
         for k in 1..7 {
             let m = a + (b - a) * (f64::from(k) / 7.0); // rounded: not exactly on a–b
-            let left = Polygon::new(vec![a, m, b, v(-1.0, 1.0, 0.0), v(-1.0, 0.0, 0.0)]).unwrap();
-            let right = Polygon::new(vec![a, v(2.0, 0.0, 0.0), v(2.0, 1.0, 0.0), b, m]).unwrap();
+            let left = Polygon::new(vec![
+                a,
+                m,
+                b,
+                v(-1.0, 1.0, 0.0),
+                v(-1.0, 0.0, 0.0),
+            ])
+            .unwrap();
+            let right =
+                Polygon::new(vec![a, v(2.0, 0.0, 0.0), v(2.0, 1.0, 0.0), b, m])
+                    .unwrap();
             let pair = [left, right];
             let mut targets = vec![m];
             for j in 1..25 {
@@ -218,7 +234,10 @@ fn chain_with_an_almost_straight_vertex() {
             }
             for q in targets {
                 rays += 1;
-                match hits(&pair, &Ray::new(v(q.x, q.y, 1.0), v(0.0, 0.0, -1.0))) {
+                match hits(
+                    &pair,
+                    &Ray::new(v(q.x, q.y, 1.0), v(0.0, 0.0, -1.0)),
+                ) {
                     0 => fall_through += 1,
                     1 => {}
                     _ => twice += 1,

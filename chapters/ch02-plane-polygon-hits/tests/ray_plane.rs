@@ -19,8 +19,12 @@ fn describe(r: RayPlane) -> String {
 /// The lecture's cases on the plane z = 1 and on a tilted plane.
 #[test]
 fn ray_plane_table() {
-    let floor = Plane::through(v(0.0, 0.0, 1.0), v(1.0, 0.0, 1.0), v(0.0, 1.0, 1.0)).unwrap();
-    let tilted = Plane::through(v(1.0, 0.0, 0.0), v(0.0, 1.0, 0.0), v(0.0, 0.0, 1.0)).unwrap();
+    let floor =
+        Plane::through(v(0.0, 0.0, 1.0), v(1.0, 0.0, 1.0), v(0.0, 1.0, 1.0))
+            .unwrap();
+    let tilted =
+        Plane::through(v(1.0, 0.0, 0.0), v(0.0, 1.0, 0.0), v(0.0, 0.0, 1.0))
+            .unwrap();
     let to_10 = Interval::new(0.0, 10.0);
     #[rustfmt::skip]
     let cases = [
@@ -52,7 +56,9 @@ fn ray_plane_table() {
 
 #[test]
 fn intersect_plane_returns_the_point_and_normal() {
-    let floor = Plane::through(v(0.0, 0.0, 1.0), v(1.0, 0.0, 1.0), v(0.0, 1.0, 1.0)).unwrap();
+    let floor =
+        Plane::through(v(0.0, 0.0, 1.0), v(1.0, 0.0, 1.0), v(0.0, 1.0, 1.0))
+            .unwrap();
     let ray = Ray::new(v(1.0, 2.0, 3.0), v(0.0, 0.0, -1.0));
     let hit = intersect_plane(&floor, &ray, Interval::FORWARD).unwrap();
     assert_eq!(
@@ -63,7 +69,8 @@ fn intersect_plane_returns_the_point_and_normal() {
 }
 
 fn point() -> impl Strategy<Value = DVec3> {
-    (-50.0..50.0f64, -50.0..50.0f64, -50.0..50.0f64).prop_map(|(x, y, z)| v(x, y, z))
+    (-50.0..50.0f64, -50.0..50.0f64, -50.0..50.0f64)
+        .prop_map(|(x, y, z)| v(x, y, z))
 }
 
 proptest! {
@@ -122,7 +129,9 @@ fn accurate_dot(a: DVec3, b: DVec3, c: f64) -> f64 {
 /// so any correct order of operations passes.
 #[test]
 fn nearly_parallel_rays() {
-    let plane = Plane::through(v(1.0, 0.2, -0.3), v(-0.4, 1.1, 0.5), v(0.3, -0.7, 1.3)).unwrap();
+    let plane =
+        Plane::through(v(1.0, 0.2, -0.3), v(-0.4, 1.1, 0.5), v(0.3, -0.7, 1.3))
+            .unwrap();
     let n = plane.normal;
     // two unit directions in the plane
     let u = n.any_orthonormal_vector();
@@ -142,9 +151,11 @@ fn nearly_parallel_rays() {
             let approach = accurate_dot(n, dir, 0.0);
             let expected = -accurate_dot(n, ray.origin, plane.d) / approach;
             let magnitude = n.abs().dot(dir.abs());
-            let tolerance = 1e-14 + 16.0 * f64::EPSILON * magnitude / approach.abs();
+            let tolerance =
+                1e-14 + 16.0 * f64::EPSILON * magnitude / approach.abs();
             match ray_plane(&plane, &ray, Interval::FORWARD) {
-                RayPlane::Hit(t) if ((t - expected) / expected).abs() <= tolerance => {}
+                RayPlane::Hit(t)
+                    if ((t - expected) / expected).abs() <= tolerance => {}
                 _ => failures += 1,
             }
         }

@@ -36,7 +36,12 @@ impl Accelerator for BruteForce {
     /// blocker found answers it. Nothing is sorted, no closest t is kept,
     /// and in a scene where most shadow rays are blocked most of the loop
     /// is skipped.
-    fn any_hit(&self, objects: &[Object], ray: &Ray, interval: Interval) -> bool {
+    fn any_hit(
+        &self,
+        objects: &[Object],
+        ray: &Ray,
+        interval: Interval,
+    ) -> bool {
         for object in objects {
             if object.shape.intersect(ray, interval).is_some() {
                 return true; // one blocker is enough

@@ -39,5 +39,7 @@ pub use raystep_world::{Accelerator, Object, World, WorldError};
 pub use reflect::reflect_light;
 pub use shading::{LightSample, ShadingTerms};
 pub use sphere::Sphere;
-pub use trace::{Terms, render, render_with, shade, shade_hit, shade_with, trace};
+pub use trace::{
+    Terms, render, render_with, shade, shade_hit, shade_with, trace,
+};
 pub use world::{load, parse, shape, world};

@@ -34,7 +34,8 @@ pub fn shading_terms(
         // Step 3: diffuse, kd·(N·Lᵢ).
         terms.diffuse += incoming * material.kd * n_dot_l;
         // Step 4: specular, ks·(Rᵢ·V)^p with Rᵢ the mirrored Lᵢ.
-        let r_dot_v = reflect_light(light.direction, normal).dot(to_eye).max(0.0);
+        let r_dot_v =
+            reflect_light(light.direction, normal).dot(to_eye).max(0.0);
         terms.specular += incoming * material.ks * r_dot_v.powf(material.p);
     }
     terms

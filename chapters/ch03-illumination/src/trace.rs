@@ -101,7 +101,11 @@ impl Terms {
 /// For each pixel on screen: shoot a ray through its centre and shade what
 /// it hits first. Rows run in parallel; the image is the same for any
 /// number of threads.
-pub fn render(world: &World, terms: Terms, options: &RenderOptions) -> Result<Image, RenderError> {
+pub fn render(
+    world: &World,
+    terms: Terms,
+    options: &RenderOptions,
+) -> Result<Image, RenderError> {
     render_with(world, options, |ray| {
         shade(world, ray).map_or(world.background, |t| terms.pick(&t))
     })

@@ -15,7 +15,9 @@ use crate::{BruteForce, Sphere};
 /// degenerate polygon).
 pub fn shape(spec: &ShapeSpec) -> Result<Arc<dyn Shape>, String> {
     Ok(match spec {
-        ShapeSpec::Sphere { center, radius } => Arc::new(Sphere::new(*center, *radius)),
+        ShapeSpec::Sphere { center, radius } => {
+            Arc::new(Sphere::new(*center, *radius))
+        }
         ShapeSpec::Plane { point, normal } => Arc::new(InfinitePlane(Plane {
             normal: *normal,
             d: -normal.dot(*point),

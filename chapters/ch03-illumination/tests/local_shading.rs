@@ -45,7 +45,8 @@ fn shading_table() {
         ("highlight off-axis", eye_side, vec![light(v(-1.0, 1.0, 0.0), 1.0)]),
         ("two lights", eye_above, vec![light(v(0.0, 1.0, 0.0), 0.5), light(v(1.0, 1.0, 0.0), 2.0)]),
     ];
-    let mut table = Table::new(&["case", "ambient", "diffuse", "specular", "L"]);
+    let mut table =
+        Table::new(&["case", "ambient", "diffuse", "specular", "L"]);
     for (name, eye, lights) in cases {
         let t = shading_terms(&m, n, eye, ambient, &lights);
         table.row(&[

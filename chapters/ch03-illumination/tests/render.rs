@@ -7,7 +7,8 @@ use raystep_check::{Tolerance, assert_image_matches};
 use raystep_render::Progress;
 
 fn spheres(width: u32, height: u32) -> World {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/spheres.toml");
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/spheres.toml");
     let mut world = ch03::load(&path).expect("the chapter's scene loads");
     // the same 16:9 framing, fewer pixels
     (world.width, world.height) = (width, height);
@@ -33,7 +34,8 @@ fn ascii_render() {
 #[test]
 fn matches_the_reference_render() {
     let image = render(&spheres(160, 90), Terms::All, &quiet(None)).unwrap();
-    let expected = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/images/spheres-160x90.png");
+    let expected = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/images/spheres-160x90.png");
     assert_image_matches(&image, &expected, Tolerance::default());
 }
 

@@ -81,11 +81,16 @@ fn grazing_rays() {
             let side = v(phi.cos(), phi.sin(), 0.0);
             for k in 1..=10 {
                 let eps = 10f64.powi(-k);
-                for (offset, should_hit) in [(1.0 - eps, true), (1.0 + eps, false)] {
-                    let origin =
-                        sphere.center + side * sphere.radius * offset + v(0.0, 0.0, 10.0 * scale);
-                    let hit =
-                        sphere.intersect(&Ray::new(origin, v(0.0, 0.0, -1.0)), Interval::FORWARD);
+                for (offset, should_hit) in
+                    [(1.0 - eps, true), (1.0 + eps, false)]
+                {
+                    let origin = sphere.center
+                        + side * sphere.radius * offset
+                        + v(0.0, 0.0, 10.0 * scale);
+                    let hit = sphere.intersect(
+                        &Ray::new(origin, v(0.0, 0.0, -1.0)),
+                        Interval::FORWARD,
+                    );
                     checked += 1;
                     if hit.is_some() != should_hit {
                         failures += 1;
@@ -105,7 +110,9 @@ fn grazing_rays() {
 #[test]
 fn far_and_tiny_spheres() {
     let (mut hits, mut failures) = (0, 0);
-    for (center, radius) in [(v(1e7, 2e6, -3e6), 1.0), (v(2e-5, -1e-5, 3e-5), 1e-6)] {
+    for (center, radius) in
+        [(v(1e7, 2e6, -3e6), 1.0), (v(2e-5, -1e-5, 3e-5), 1e-6)]
+    {
         let sphere = Sphere::new(center, radius);
         let dist = center.length();
         let to_center = center / dist;
@@ -113,11 +120,15 @@ fn far_and_tiny_spheres() {
         let w = to_center.cross(u);
         for i in -10..=10 {
             for j in -10..=10 {
-                let target = center + 0.095 * radius * (f64::from(i) * u + f64::from(j) * w);
-                let ray = Ray::new(DVec3::ZERO, (target - DVec3::ZERO).normalize());
+                let target = center
+                    + 0.095 * radius * (f64::from(i) * u + f64::from(j) * w);
+                let ray =
+                    Ray::new(DVec3::ZERO, (target - DVec3::ZERO).normalize());
                 if let Some(hit) = sphere.intersect(&ray, Interval::FORWARD) {
                     hits += 1;
-                    if ((hit.point - center).length() - radius).abs() > 1e-6 * radius {
+                    if ((hit.point - center).length() - radius).abs()
+                        > 1e-6 * radius
+                    {
                         failures += 1;
                     }
                 }

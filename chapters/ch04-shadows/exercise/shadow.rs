@@ -12,7 +12,13 @@ use raystep_scene::Light;
 /// `normal` is the hit's unit normal turned toward the viewer (what
 /// `ch03::shade_with` passes), and `offset` says how the shadow ray keeps
 /// clear of the surface it starts on.
-pub fn shadow(world: &World, hit: &Hit, normal: DVec3, light: &Light, offset: Offset) -> f64 {
+pub fn shadow(
+    world: &World,
+    hit: &Hit,
+    normal: DVec3,
+    light: &Light,
+    offset: Offset,
+) -> f64 {
     // TODO:
     // 1. If the light is behind the surface (normal · (light.position −
     //    hit.point) ≤ 0), the surface itself blocks it: return 0.

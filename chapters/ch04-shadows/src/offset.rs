@@ -54,7 +54,9 @@ pub fn shadow_ray(
             )
         }
         // Strategy 2: lift the origin a fixed distance along the normal.
-        Offset::AlongNormal(epsilon) => normal_offset_ray(point, normal, light_position, epsilon),
+        Offset::AlongNormal(epsilon) => {
+            normal_offset_ray(point, normal, light_position, epsilon)
+        }
         // Strategy 3: lift it by an amount that follows P's magnitude.
         Offset::ScaleAware => {
             let origin = offset_scale_aware(point, normal);

@@ -51,6 +51,8 @@ pub fn scaled(scene: &Scene, scale: f64) -> Scene {
 /// If `scale` is not positive and finite.
 pub fn scaled_scene(scale: f64) -> World {
     assert!(scale.is_finite() && scale > 0.0, "scale {scale}");
-    let scene = raystep_scene::parse(ACNE_SCENE, "acne.toml").expect("acne.toml is valid");
-    ch03::world(&scaled(&scene, scale), "acne.toml").expect("acne.toml has no polygons")
+    let scene = raystep_scene::parse(ACNE_SCENE, "acne.toml")
+        .expect("acne.toml is valid");
+    ch03::world(&scaled(&scene, scale), "acne.toml")
+        .expect("acne.toml has no polygons")
 }

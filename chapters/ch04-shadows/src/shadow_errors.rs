@@ -61,7 +61,12 @@ pub enum Verdict {
 /// comes back), so skipping it removes the acne and nothing else. (A
 /// polygon could not be skipped so lightly in a mesh, where its neighbours
 /// are the same surface.)
-pub fn verdict(world: &World, ray: &Ray, light: DVec3, offset: Offset) -> Verdict {
+pub fn verdict(
+    world: &World,
+    ray: &Ray,
+    light: DVec3,
+    offset: Offset,
+) -> Verdict {
     let Some((object, hit)) = world.closest_hit(ray, Interval::FORWARD) else {
         return Verdict::Unjudged;
     };
@@ -76,7 +81,8 @@ pub fn verdict(world: &World, ray: &Ray, light: DVec3, offset: Offset) -> Verdic
         return Verdict::Unjudged; // behind the surface: in shadow either way
     }
     // the truth: every object but this one, from the point itself
-    let truth_blocked = blocked_by_another(world, &Ray::new(hit.point, to_light), object);
+    let truth_blocked =
+        blocked_by_another(world, &Ray::new(hit.point, to_light), object);
     // the strategy: every object, from where it starts the ray
     let (strategy_ray, interval) = shadow_ray(hit.point, normal, light, offset);
     match (
@@ -110,9 +116,10 @@ pub fn shadow_errors(world: &World, offset: Offset) -> ShadowErrors {
     let mut errors = ShadowErrors::default();
     for row in 0..world.height {
         for column in 0..world.width {
-            let ray = world
-                .camera
-                .pixel_ray(column, row, world.width, world.height);
+            let ray =
+                world
+                    .camera
+                    .pixel_ray(column, row, world.width, world.height);
             for light in &world.lights {
                 match verdict(world, &ray, light.position, offset) {
                     Verdict::Unjudged => continue,

@@ -45,7 +45,8 @@ const STRATEGIES: [(&str, Offset); 6] = [
 /// shadow each strategy gets wrong, at scales 1e-3, 1 and 1e4.
 #[test]
 fn acne_and_leaks_table() {
-    let mut table = Table::new(&["scale", "strategy", "pixels", "acne", "leaks"]);
+    let mut table =
+        Table::new(&["scale", "strategy", "pixels", "acne", "leaks"]);
     for scale in SCALES {
         let world = scene(scale);
         for (name, offset) in STRATEGIES {

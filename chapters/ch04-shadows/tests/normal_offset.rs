@@ -2,7 +2,9 @@
 //! two strategies.
 use std::sync::Arc;
 
-use ch04::{DVec3, Interval, Offset, Ray, Shape, normal_offset_ray, shadow_ray};
+use ch04::{
+    DVec3, Interval, Offset, Ray, Shape, normal_offset_ray, shadow_ray,
+};
 use raystep_check::{Table, num, vec3};
 use raystep_scene::Shape as SceneShape;
 
@@ -119,7 +121,8 @@ fn cases(scale: f64) -> Vec<Case> {
             surface: plane,
             blocker: plane_blocker,
             primary: |rng, s| {
-                let (p0, n0) = (v(0.2, -1.0, 0.3) * s, v(0.1, 1.0, -0.2).normalize());
+                let (p0, n0) =
+                    (v(0.2, -1.0, 0.3) * s, v(0.1, 1.0, -0.2).normalize());
                 let lateral = |rng: &mut Rng| {
                     let u = rng.unit();
                     u - u.dot(n0) * n0
@@ -163,7 +166,13 @@ fn offset_origins_table() {
         ("AlongNormal(1e-4)", Offset::AlongNormal(1e-4)),
         ("ScaleAware", Offset::ScaleAware),
     ];
-    let mut table = Table::new(&["case", "strategy", "origin", "moved along N", "interval"]);
+    let mut table = Table::new(&[
+        "case",
+        "strategy",
+        "origin",
+        "moved along N",
+        "interval",
+    ]);
     for (name, point, normal, light) in cases {
         for (strategy, offset) in strategies {
             let (ray, interval) = shadow_ray(point, normal, light, offset);
@@ -184,7 +193,8 @@ fn offset_origins_table() {
 /// at the light, and the interval is [0, 1].
 #[test]
 fn normal_offset_ray_moves_the_origin_only() {
-    let (point, normal, light) = (v(1.0, 2.0, 3.0), v(0.0, 0.6, 0.8), v(1.0, 8.0, 11.0));
+    let (point, normal, light) =
+        (v(1.0, 2.0, 3.0), v(0.0, 0.6, 0.8), v(1.0, 8.0, 11.0));
     let (ray, interval) = normal_offset_ray(point, normal, light, 0.5);
     assert_eq!(ray.origin, v(1.0, 2.3, 3.4));
     assert_eq!(ray.origin + ray.direction, light);
@@ -198,7 +208,10 @@ type PerStrategy = Vec<Vec<(usize, usize)>>;
 /// re-hits (the ray meets its own surface again: acne) and skips (it
 /// misses the blocker GAP·scale away: a leak). Every scale and case draws
 /// the same random numbers, so the scenes differ only in their scale.
-fn stability(strategies: &[Offset], rays: usize) -> Vec<(&'static str, PerStrategy)> {
+fn stability(
+    strategies: &[Offset],
+    rays: usize,
+) -> Vec<(&'static str, PerStrategy)> {
     let names = ["sphere", "plane", "floor y = 0"];
     let mut out: Vec<_> = names
         .iter()
@@ -213,7 +226,9 @@ fn stability(strategies: &[Offset], rays: usize) -> Vec<(&'static str, PerStrate
             let mut n = 0;
             while n < rays {
                 let primary = (case.primary)(&mut rng, scale);
-                let Some(hit) = case.surface.intersect(&primary, Interval::FORWARD) else {
+                let Some(hit) =
+                    case.surface.intersect(&primary, Interval::FORWARD)
+                else {
                     continue;
                 };
                 n += 1;
@@ -229,7 +244,8 @@ fn stability(strategies: &[Offset], rays: usize) -> Vec<(&'static str, PerStrate
                 let d = if d.dot(normal) < 0.0 { -d } else { d };
                 let light = hit.point + 10.0 * scale * d;
                 for (strategy, count) in strategies.iter().zip(&mut counts) {
-                    let (ray, interval) = shadow_ray(hit.point, normal, light, *strategy);
+                    let (ray, interval) =
+                        shadow_ray(hit.point, normal, light, *strategy);
                     if case.surface.intersect(&ray, interval).is_some() {
                         count.0 += 1;
                     }

@@ -22,7 +22,12 @@ fn light(position: DVec3) -> Light {
 
 /// Sᵢ with the scale-aware offset (this exercise's code does not depend on
 /// which strategy builds the ray).
-fn si(world: &World, point: DVec3, normal: DVec3, light_position: DVec3) -> f64 {
+fn si(
+    world: &World,
+    point: DVec3,
+    normal: DVec3,
+    light_position: DVec3,
+) -> f64 {
     let hit = Hit {
         t: 1.0,
         point,
@@ -112,7 +117,9 @@ proptest! {
 /// `scenes/two-lights.toml` at `width × height` (16:9, the file's own
 /// proportion, which its camera was made for).
 fn two_lights(width: u32, height: u32) -> World {
-    let mut scene = raystep_scene::parse(ch04::TWO_LIGHTS_SCENE, "two-lights.toml").unwrap();
+    let mut scene =
+        raystep_scene::parse(ch04::TWO_LIGHTS_SCENE, "two-lights.toml")
+            .unwrap();
     (scene.width, scene.height) = (width, height);
     ch03::world(&scene, "two-lights.toml").unwrap()
 }
@@ -128,7 +135,8 @@ fn options(threads: usize) -> RenderOptions {
 /// and right, each lit by the other light.
 #[test]
 fn two_lights_ascii() {
-    let image = render(&two_lights(64, 36), Offset::ScaleAware, &options(2)).unwrap();
+    let image =
+        render(&two_lights(64, 36), Offset::ScaleAware, &options(2)).unwrap();
     insta::assert_snapshot!(image.to_ascii(64));
 }
 
@@ -146,7 +154,9 @@ fn renders_are_the_same_for_any_number_of_threads() {
 /// within the default tolerance. RAYSTEP_BLESS=1 rewrites the reference.
 #[test]
 fn two_lights_image() {
-    let image = render(&two_lights(160, 90), Offset::ScaleAware, &options(2)).unwrap();
-    let expected = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/images/two-lights.png");
+    let image =
+        render(&two_lights(160, 90), Offset::ScaleAware, &options(2)).unwrap();
+    let expected = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/images/two-lights.png");
     assert_image_matches(&image, &expected, Tolerance::default());
 }

@@ -102,7 +102,13 @@ impl RayLog {
     }
 
     /// Notes a shadow ray from a hit at `path`, and whether it was blocked.
-    pub fn shadow(&mut self, path: Path, ray: &Ray, t_light: f64, blocked: bool) {
+    pub fn shadow(
+        &mut self,
+        path: Path,
+        ray: &Ray,
+        t_light: f64,
+        blocked: bool,
+    ) {
         self.counts.shadow += 1;
         self.keep(path, ray, Some(t_light), true, blocked, None);
     }

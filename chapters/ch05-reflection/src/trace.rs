@@ -70,19 +70,32 @@ impl<'a> Tracer<'a> {
     /// Step 2: ka·Ia + Σᵢ Sᵢ·Iᵢ·[kd·(N·Lᵢ) + ks·(Rᵢ·V)^p] at `hit` on
     /// `object`, seen along `ray`: chapter 04's shading, with Sᵢ from a
     /// shadow ray that starts off the surface by the scale-aware offset.
-    pub fn local_light(&self, ray: &Ray, hit: &Hit, object: usize, path: Path) -> DVec3 {
+    pub fn local_light(
+        &self,
+        ray: &Ray,
+        hit: &Hit,
+        object: usize,
+        path: Path,
+    ) -> DVec3 {
         let world = self.world;
         let terms = shade_hit(world, ray, hit, object, |hit, normal, light| {
             // A light behind the surface needs no ray (chapter 04, step 1).
             if normal.dot(light.position - hit.point) <= 0.0 {
                 return 0.0;
             }
-            let (shadow, interval) =
-                shadow_ray(hit.point, normal, light.position, Offset::ScaleAware);
+            let (shadow, interval) = shadow_ray(
+                hit.point,
+                normal,
+                light.position,
+                Offset::ScaleAware,
+            );
             let blocked = occluded(world, &shadow, interval);
-            self.notebook
-                .borrow_mut()
-                .shadow(path, &shadow, interval.max, blocked);
+            self.notebook.borrow_mut().shadow(
+                path,
+                &shadow,
+                interval.max,
+                blocked,
+            );
             if blocked { 0.0 } else { 1.0 }
         });
         terms.sum()
@@ -123,7 +136,11 @@ pub fn render(
 // ANCHOR_END: render
 
 /// The colour of one primary `ray` under `stop`, and the rays it took.
-pub fn trace_counted(world: &World, ray: &Ray, stop: &Stop) -> (DVec3, RayCounts) {
+pub fn trace_counted(
+    world: &World,
+    ray: &Ray,
+    stop: &Stop,
+) -> (DVec3, RayCounts) {
     let tracer = Tracer::new(world, *stop);
     let colour = tracer.trace(ray, Path::PRIMARY);
     (colour, tracer.counts())
@@ -138,7 +155,12 @@ pub fn ray_tree(world: &World, ray: &Ray, stop: &Stop) -> Vec<LoggedRay> {
 }
 
 /// The ray tree of one pixel (see [`ray_tree`]).
-pub fn pixel_tree(world: &World, column: u32, row: u32, stop: &Stop) -> Vec<LoggedRay> {
+pub fn pixel_tree(
+    world: &World,
+    column: u32,
+    row: u32,
+    stop: &Stop,
+) -> Vec<LoggedRay> {
     let ray = world
         .camera
         .pixel_ray(column, row, world.width, world.height);

@@ -2,8 +2,8 @@
 //! that stop it (a maximum depth; a contribution below a threshold).
 use ch04::{Offset, offset_scale_aware};
 use ch05::{
-    Cut, DEFAULT_STOP, DVec3, Interval, LoggedRay, Ray, RayCounts, SAFETY_DEPTH, Stop, World,
-    pixel_tree, ray_tree, render, trace_counted,
+    Cut, DEFAULT_STOP, DVec3, Interval, LoggedRay, Ray, RayCounts,
+    SAFETY_DEPTH, Stop, World, pixel_tree, ray_tree, render, trace_counted,
 };
 use raystep_check::{Table, num, vec3};
 
@@ -14,9 +14,10 @@ use common::{chapter_scene, quiet, world_from};
 fn primary_rays(world: &World) -> impl Iterator<Item = (u32, u32, Ray)> + '_ {
     (0..world.height).flat_map(move |row| {
         (0..world.width).map(move |column| {
-            let ray = world
-                .camera
-                .pixel_ray(column, row, world.width, world.height);
+            let ray =
+                world
+                    .camera
+                    .pixel_ray(column, row, world.width, world.height);
             (column, row, ray)
         })
     })
@@ -86,8 +87,11 @@ fn depth_zero_is_the_chapter_04_colour() {
                 "pixel ({column}, {row}): depth 0 gives {colour}, chapter 04 {local}"
             );
             total += counts;
-            if let Some((object, _)) = world.closest_hit(&ray, Interval::FORWARD) {
-                on_mirrors += u64::from(world.material_of(object).kr != DVec3::ZERO);
+            if let Some((object, _)) =
+                world.closest_hit(&ray, Interval::FORWARD)
+            {
+                on_mirrors +=
+                    u64::from(world.material_of(object).kr != DVec3::ZERO);
             }
         }
         assert_eq!(total.primary, u64::from(world.width * world.height));
@@ -109,16 +113,22 @@ fn depth_one_adds_kr_times_what_the_reflected_ray_sees() {
         let (colour, counts) = trace_counted(&world, &ray, &Stop::depth(1));
         let local = ch04::trace(&world, &ray, Offset::ScaleAware);
         let mut expected = local;
-        if let Some((object, hit)) = world.closest_hit(&ray, Interval::FORWARD) {
+        if let Some((object, hit)) = world.closest_hit(&ray, Interval::FORWARD)
+        {
             let kr = world.material_of(object).kr;
             if kr != DVec3::ZERO {
                 let n = hit.facing(ray.direction);
                 let d = ray.direction;
-                let reflected = Ray::new(offset_scale_aware(hit.point, n), d - 2.0 * d.dot(n) * n);
-                expected += kr * ch04::trace(&world, &reflected, Offset::ScaleAware);
+                let reflected = Ray::new(
+                    offset_scale_aware(hit.point, n),
+                    d - 2.0 * d.dot(n) * n,
+                );
+                expected +=
+                    kr * ch04::trace(&world, &reflected, Offset::ScaleAware);
                 mirror_pixels += 1;
-                ball_in_mirror +=
-                    usize::from(world.closest_hit(&reflected, Interval::FORWARD).is_some());
+                ball_in_mirror += usize::from(
+                    world.closest_hit(&reflected, Interval::FORWARD).is_some(),
+                );
                 assert_eq!(counts.secondary, 1, "pixel ({column}, {row})");
             }
         }
@@ -184,7 +194,10 @@ fn depth_rule_counts() {
             assert_eq!(c.cut_by_contribution, 0);
         }
         for pair in counts.windows(2) {
-            assert_eq!(pair[1].secondary, pair[0].secondary + pair[0].cut_by_depth);
+            assert_eq!(
+                pair[1].secondary,
+                pair[0].secondary + pair[0].cut_by_depth
+            );
             assert!(pair[1].cut_by_depth <= pair[0].cut_by_depth);
         }
     }
@@ -209,7 +222,9 @@ fn contribution_rule_counts() {
             .fold(0.0, f64::max);
         let mut previous: Option<RayCounts> = None;
         for threshold in [1e-1, 1e-2, 1e-3, 1e-4] {
-            let (_, c) = render(&world, &Stop::contribution(threshold), &quiet(Some(2))).unwrap();
+            let (_, c) =
+                render(&world, &Stop::contribution(threshold), &quiet(Some(2)))
+                    .unwrap();
             counts_row(
                 &mut table,
                 format!("{name}, contribution ≥ {threshold:e}"),
@@ -266,7 +281,12 @@ const BETWEEN: Ray = Ray::new(DVec3::ZERO, DVec3::X);
 
 /// Every hit of the ray is lit (the light is above, in front of both
 /// mirrors), so each hit shoots one shadow ray.
-fn assert_one_chain(c: &RayCounts, reflected: u64, cut_by_depth: u64, cut_by_contribution: u64) {
+fn assert_one_chain(
+    c: &RayCounts,
+    reflected: u64,
+    cut_by_depth: u64,
+    cut_by_contribution: u64,
+) {
     let expected = RayCounts {
         primary: 1,
         secondary: reflected,
@@ -298,20 +318,23 @@ fn facing_mirrors_terminate() {
     for kr in ["1", "0.85"] {
         let world = facing_mirrors(kr);
         for max_depth in [0, 1, 2, 7, 20] {
-            let (_, c) = trace_counted(&world, &BETWEEN, &Stop::depth(max_depth));
+            let (_, c) =
+                trace_counted(&world, &BETWEEN, &Stop::depth(max_depth));
             assert_one_chain(&c, u64::from(max_depth), 1, 0);
         }
     }
     let perfect = facing_mirrors("1");
     for threshold in [1e-1, 1e-3] {
-        let (_, c) = trace_counted(&perfect, &BETWEEN, &Stop::contribution(threshold));
+        let (_, c) =
+            trace_counted(&perfect, &BETWEEN, &Stop::contribution(threshold));
         assert_one_chain(&c, u64::from(SAFETY_DEPTH), 1, 0);
     }
     let tarnished = facing_mirrors("0.85");
     let mut shot = Vec::new();
     for threshold in [1e-1, 1e-2, 1e-3, 1e-4] {
         let n = first_weight_below(0.85, threshold);
-        let (_, c) = trace_counted(&tarnished, &BETWEEN, &Stop::contribution(threshold));
+        let (_, c) =
+            trace_counted(&tarnished, &BETWEEN, &Stop::contribution(threshold));
         // rays 1..n−1 are shot, ray n is cut
         assert_one_chain(&c, n - 1, 0, 1);
         shot.push(c.secondary);
@@ -365,7 +388,9 @@ fn contribution_cut_by_hand() {
 #[test]
 fn facing_mirrors_colour_by_hand() {
     let local = 0.1 * 0.1 + 0.1 / 26f64.sqrt();
-    let series = |kr: f64, m: u32| (0..=m).map(|k| local * kr.powi(k as i32)).sum::<f64>();
+    let series = |kr: f64, m: u32| {
+        (0..=m).map(|k| local * kr.powi(k as i32)).sum::<f64>()
+    };
     let half = facing_mirrors("0.5");
     for m in [0, 1, 2, 5, 10] {
         let (colour, _) = trace_counted(&half, &BETWEEN, &Stop::depth(m));
@@ -378,13 +403,18 @@ fn facing_mirrors_colour_by_hand() {
     let (colour, _) = trace_counted(&half, &BETWEEN, &Stop::contribution(0.1));
     assert!(distance(colour, DVec3::splat(series(0.5, 3))) < 1e-12);
     // perfect mirrors to the safety depth: 65 equal terms
-    let (colour, _) = trace_counted(&facing_mirrors("1"), &BETWEEN, &DEFAULT_STOP);
+    let (colour, _) =
+        trace_counted(&facing_mirrors("1"), &BETWEEN, &DEFAULT_STOP);
     assert!(
         distance(colour, DVec3::splat(65.0 * local)) < 1e-12,
         "{colour}"
     );
     // each channel is scaled by its own kr
-    let (colour, _) = trace_counted(&facing_mirrors("[0.5, 0.25, 0]"), &BETWEEN, &Stop::depth(3));
+    let (colour, _) = trace_counted(
+        &facing_mirrors("[0.5, 0.25, 0]"),
+        &BETWEEN,
+        &Stop::depth(3),
+    );
     let expected = DVec3::new(series(0.5, 3), series(0.25, 3), local);
     assert!(distance(colour, expected) < 1e-12, "{colour} {expected}");
 }
@@ -420,8 +450,13 @@ fn pixel_trees_of_the_mirror_ball() {
         for (i, r) in rays.iter().enumerate() {
             let material = || {
                 world
-                    .closest_hit(&Ray::new(r.origin, r.direction), Interval::FORWARD)
-                    .map_or("?".to_string(), |(o, _)| world.material_of(o).name.clone())
+                    .closest_hit(
+                        &Ray::new(r.origin, r.direction),
+                        Interval::FORWARD,
+                    )
+                    .map_or("?".to_string(), |(o, _)| {
+                        world.material_of(o).name.clone()
+                    })
             };
             let ends = match (r.cut, r.t) {
                 (Some(Cut::Depth), _) => "cut: depth".to_string(),
@@ -464,8 +499,10 @@ fn brightest_local(world: &World) -> DVec3 {
         .materials
         .iter()
         .flat_map(|m| {
-            let checker = m.checker.as_ref().map_or((m.ka, m.kd), |c| (c.ka, c.kd));
-            [(m.ka, m.kd), checker].map(|(ka, kd)| ka * world.ambient + lights * (kd + m.ks))
+            let checker =
+                m.checker.as_ref().map_or((m.ka, m.kd), |c| (c.ka, c.kd));
+            [(m.ka, m.kd), checker]
+                .map(|(ka, kd)| ka * world.ambient + lights * (kd + m.ks))
         })
         .fold(world.background, DVec3::max)
 }
@@ -530,7 +567,8 @@ fn each_level_adds_at_most_its_cut_ray_in(world: &World) {
         let (shallow, deep) = (&images[depth], &images[depth + 1]);
         for (column, row, _) in primary_rays(world) {
             let (a, b) = (shallow.get(column, row), deep.get(column, row));
-            let tree = pixel_tree(world, column, row, &Stop::depth(depth as u32));
+            let tree =
+                pixel_tree(world, column, row, &Stop::depth(depth as u32));
             let cut: Vec<_> = tree.iter().filter(|r| r.cut.is_some()).collect();
             assert!(cut.len() <= 1);
             let bound = cut
@@ -558,7 +596,10 @@ fn reflected_rays_never_hit_their_own_surface() {
         let world = chapter_scene(name, 48, 27);
         let object_hit = |r: &LoggedRay| {
             world
-                .closest_hit(&Ray::new(r.origin, r.direction), Interval::FORWARD)
+                .closest_hit(
+                    &Ray::new(r.origin, r.direction),
+                    Interval::FORWARD,
+                )
                 .map(|(object, hit)| (hit.t, object))
         };
         let (mut checked, mut self_hits, mut too_close) = (0, 0, 0);
@@ -567,7 +608,8 @@ fn reflected_rays_never_hit_their_own_surface() {
             let mut parent: Option<&LoggedRay> = None;
             for r in tree.iter().filter(|r| !r.shadow) {
                 if !r.is_primary() && r.cut.is_none() {
-                    let (_, source) = object_hit(parent.unwrap()).expect("the parent hit a mirror");
+                    let (_, source) = object_hit(parent.unwrap())
+                        .expect("the parent hit a mirror");
                     checked += 1;
                     if let Some((t, object)) = object_hit(r) {
                         self_hits += usize::from(object == source);

@@ -57,7 +57,8 @@ fn reflected_directions_table() {
         ("wall", DVec3::Z, v(0.6, 0.8, 0.0), 1.0),
     ];
     let angles = [0.0, 30.0, 45.0, 60.0, 89.0, 90.0];
-    let mut table = Table::new(&["surface", "N", "θ in", "D", "R", "θ out", "|R|"]);
+    let mut table =
+        Table::new(&["surface", "N", "θ in", "D", "R", "θ out", "|R|"]);
     for (name, n, tangent, side) in surfaces {
         for theta in angles {
             let (sin, cos) = f64::to_radians(theta).sin_cos();

@@ -24,7 +24,8 @@ fn ascii_render() {
 fn matches_the_reference_render() {
     let world = chapter_scene("mirrors", 160, 90);
     let (image, _) = render(&world, &DEFAULT_STOP, &quiet(Some(2))).unwrap();
-    let expected = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/images/mirrors-160x90.png");
+    let expected = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/images/mirrors-160x90.png");
     assert_image_matches(&image, &expected, Tolerance::default());
 }
 
@@ -34,8 +35,10 @@ fn matches_the_reference_render() {
 #[test]
 fn same_image_and_counts_for_one_and_two_threads() {
     let world = chapter_scene("mirrors", 48, 27);
-    let (one, one_counts) = render(&world, &DEFAULT_STOP, &quiet(Some(1))).unwrap();
-    let (two, two_counts) = render(&world, &DEFAULT_STOP, &quiet(Some(2))).unwrap();
+    let (one, one_counts) =
+        render(&world, &DEFAULT_STOP, &quiet(Some(1))).unwrap();
+    let (two, two_counts) =
+        render(&world, &DEFAULT_STOP, &quiet(Some(2))).unwrap();
     let bits = |image: &Image| {
         image
             .pixels()
@@ -60,7 +63,9 @@ fn counts_are_the_pixels_trees_added_up() {
             for ray in pixel_tree(&world, column, row, &DEFAULT_STOP) {
                 let n = match ray.cut {
                     Some(ch05::Cut::Depth) => &mut summed.cut_by_depth,
-                    Some(ch05::Cut::Contribution) => &mut summed.cut_by_contribution,
+                    Some(ch05::Cut::Contribution) => {
+                        &mut summed.cut_by_contribution
+                    }
                     None if ray.shadow => &mut summed.shadow,
                     None if ray.is_primary() => &mut summed.primary,
                     None => &mut summed.secondary,

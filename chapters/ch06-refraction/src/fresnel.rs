@@ -22,8 +22,10 @@ pub fn fresnel(cos_theta: f64, n_theta: f64, n_phi: f64) -> f64 {
         return 1.0;
     }
     let cos_phi = (1.0 - sin2_phi).sqrt();
-    let rs = (n_theta * cos_theta - n_phi * cos_phi) / (n_theta * cos_theta + n_phi * cos_phi);
-    let rp = (n_phi * cos_theta - n_theta * cos_phi) / (n_phi * cos_theta + n_theta * cos_phi);
+    let rs = (n_theta * cos_theta - n_phi * cos_phi)
+        / (n_theta * cos_theta + n_phi * cos_phi);
+    let rp = (n_phi * cos_theta - n_theta * cos_phi)
+        / (n_phi * cos_theta + n_theta * cos_phi);
     0.5 * (rs * rs + rp * rp)
 }
 // ANCHOR_END: fresnel

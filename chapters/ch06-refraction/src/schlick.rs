@@ -18,7 +18,8 @@ pub fn schlick(cos_theta: f64, n_theta: f64, n_phi: f64) -> f64 {
     let cos_alpha = if n_theta <= n_phi {
         cos_theta
     } else {
-        let sin2_phi = (n_theta / n_phi).powi(2) * (1.0 - cos_theta * cos_theta);
+        let sin2_phi =
+            (n_theta / n_phi).powi(2) * (1.0 - cos_theta * cos_theta);
         if sin2_phi >= 1.0 {
             return 1.0; // total internal reflection
         }

@@ -94,7 +94,11 @@ impl<'a> Tracer<'a> {
     }
 
     /// A tracer that counts its rays and keeps each one (the ray tree).
-    pub fn recording(world: &'a World, stop: Stop, fresnel: Fresnel) -> Tracer<'a> {
+    pub fn recording(
+        world: &'a World,
+        stop: Stop,
+        fresnel: Fresnel,
+    ) -> Tracer<'a> {
         Tracer::with(ch05::Tracer::recording(world, stop), fresnel)
     }
 
@@ -180,13 +184,15 @@ impl<'a> Tracer<'a> {
             t.map(|t| (t, c))
         });
         let r = match (transmitted, crossing) {
-            (Some(_), Some(c)) => {
-                self.fresnel
-                    .reflectance(-direction.dot(normal), c.n_theta, c.n_phi)
-            }
+            (Some(_), Some(c)) => self.fresnel.reflectance(
+                -direction.dot(normal),
+                c.n_theta,
+                c.n_phi,
+            ),
             _ => 0.0,
         };
-        let (wr, wt) = split(kr, kt, r, transmitted.is_some() || kt == DVec3::ZERO);
+        let (wr, wt) =
+            split(kr, kt, r, transmitted.is_some() || kt == DVec3::ZERO);
         // Step 5: kr·Lr, the reflected ray, on the ray's side of the surface,
         // in the same media.
         if wr != DVec3::ZERO {
@@ -202,7 +208,8 @@ impl<'a> Tracer<'a> {
         // Step 6: kt·Lt, the transmitted ray, on the far side, in the media
         // beyond the surface.
         if let Some((t, c)) = transmitted {
-            let transmitted = Ray::new(offset_scale_aware(hit.point, -normal), t);
+            let transmitted =
+                Ray::new(offset_scale_aware(hit.point, -normal), t);
             let next = path.then(wt);
             if self.rays.allows(&transmitted, next) {
                 Tracer::add(&self.transmitted);

@@ -31,18 +31,18 @@ fn cell(t: Option<DVec3>) -> String {
 /// critical angle, there is no T: total internal reflection ("none").
 #[test]
 fn refraction_table() {
-    let mut header = vec!["material".to_string(), "n".to_string(), "way".to_string()];
+    let mut header =
+        vec!["material".to_string(), "n".to_string(), "way".to_string()];
     header.extend(INCIDENCE_DEGREES.iter().map(|d| format!("θ={d}°")));
     let mut table = Table::new(&header);
     let n = DVec3::Y;
     for (name, ior) in REFRACTIVE_INDICES {
         for (way, n_theta, n_phi) in [("in", 1.0, ior), ("out", ior, 1.0)] {
-            let mut row = vec![name.to_string(), ior.to_string(), way.to_string()];
-            row.extend(
-                INCIDENCE_DEGREES.iter().map(|&degrees| {
-                    cell(refract(incoming(degrees.to_radians()), n, n_theta, n_phi))
-                }),
-            );
+            let mut row =
+                vec![name.to_string(), ior.to_string(), way.to_string()];
+            row.extend(INCIDENCE_DEGREES.iter().map(|&degrees| {
+                cell(refract(incoming(degrees.to_radians()), n, n_theta, n_phi))
+            }));
             table.row(&row);
         }
     }
@@ -73,7 +73,9 @@ fn critical_angle_table() {
                     cell(refract(incoming(c + step), DVec3::Y, ior, 1.0)),
                 )
             }
-            None => ("none".into(), format!("{:>7}", "-"), format!("{:>7}", "-")),
+            None => {
+                ("none".into(), format!("{:>7}", "-"), format!("{:>7}", "-"))
+            }
         };
         assert_eq!(into, None, "{name}: no critical angle going into it");
         table.row(&[name.to_string(), ior.to_string(), out_deg, below, above]);
@@ -151,7 +153,8 @@ impl Rng {
 
     fn unit(&mut self) -> DVec3 {
         loop {
-            let p = DVec3::new(self.next(), self.next(), self.next()) * 2.0 - DVec3::ONE;
+            let p = DVec3::new(self.next(), self.next(), self.next()) * 2.0
+                - DVec3::ONE;
             let l2 = p.length_squared();
             if l2 > 1e-4 && l2 <= 1.0 {
                 return p / l2.sqrt();
@@ -202,7 +205,9 @@ fn at_and_around_the_critical_angle() {
         };
         let below = refracted(critical - 1e-6);
         assert!(below.iter().all(|(n, t)| {
-            t.is_some_and(|t| (t.length() - 1.0).abs() < 1e-12 && t.dot(*n) < -1e-4)
+            t.is_some_and(|t| {
+                (t.length() - 1.0).abs() < 1e-12 && t.dot(*n) < -1e-4
+            })
         }));
         let above = refracted(critical + 1e-6);
         assert!(above.iter().all(|(_, t)| t.is_none()), "{name}");
@@ -216,7 +221,9 @@ fn at_and_around_the_critical_angle() {
         // The reference: 826 (water), 864 (glass) and 695 (diamond) of the
         // 1000 rays refract, with cos φ at most 2.8e-8, 3.9e-8 and 6.4e-8.
         let some = at.iter().filter(|(_, t)| t.is_some()).count();
-        println!("{name}: at θc, {some} of 1000 refract (grazing), the rest reflect totally");
+        println!(
+            "{name}: at θc, {some} of 1000 refract (grazing), the rest reflect totally"
+        );
     }
 }
 
@@ -227,21 +234,27 @@ fn at_and_around_the_critical_angle() {
 fn grazing_incidence_from_the_less_dense_side() {
     let frames = random_frames(100);
     for (_, ior) in REFRACTIVE_INDICES {
-        let limit = critical_angle(ior, 1.0).unwrap_or(std::f64::consts::FRAC_PI_2);
+        let limit =
+            critical_angle(ior, 1.0).unwrap_or(std::f64::consts::FRAC_PI_2);
         for k in 1..=12 {
             // θ = 90° − 10⁻ᵏ rad, and exactly 90° (D along the surface)
             for gap in [10f64.powi(-k), 0.0] {
                 let theta = std::f64::consts::FRAC_PI_2 - gap;
                 for &(n, u) in &frames {
                     let d = at_angle(n, u, theta);
-                    let t = refract(d, n, 1.0, ior).expect("entering never reflects totally");
+                    let t = refract(d, n, 1.0, ior)
+                        .expect("entering never reflects totally");
                     assert!(t.is_finite(), "n = {ior}, θ = {theta}: {t}");
                     assert!((t.length() - 1.0).abs() < 1e-12, "n = {ior}: {t}");
                     // (at exactly 90° into vacuum, T = D grazes the surface:
                     // T·N is D·N, a rounding error either side of 0)
                     assert!(t.dot(n) <= 1e-15, "n = {ior}: T·N = {}", t.dot(n));
-                    let (lhs, rhs) = (sin_between(d, n), ior * sin_between(t, n));
-                    assert!((lhs - rhs).abs() < 1e-12, "n = {ior}: {lhs} vs {rhs}");
+                    let (lhs, rhs) =
+                        (sin_between(d, n), ior * sin_between(t, n));
+                    assert!(
+                        (lhs - rhs).abs() < 1e-12,
+                        "n = {ior}: {lhs} vs {rhs}"
+                    );
                     // φ is θc within the gap (dφ/dθ ≤ 1 up here) and a few
                     // ulps of angle (near 90°, where vacuum takes φ = θ, a few ulps
                     // of sin φ are 2e-8 rad of φ)

@@ -1,8 +1,8 @@
 //! The whole tracer: local light, kr·Lr and kt·Lt through nested media.
 //! These use both exercises (Snell's law everywhere, Schlick where asked).
 use ch06::{
-    DEFAULT_STOP, DVec3, Fresnel, Image, LoggedRay, Media, Path as RayPath, Ray, RayCounts,
-    RenderOptions, Stop, Tracer, World, pixel_tree, render,
+    DEFAULT_STOP, DVec3, Fresnel, Image, LoggedRay, Media, Path as RayPath,
+    Ray, RayCounts, RenderOptions, Stop, Tracer, World, pixel_tree, render,
 };
 use raystep_check::{Tolerance, assert_image_matches};
 use raystep_render::Progress;
@@ -63,7 +63,8 @@ fn bubble_counts() {
 #[test]
 fn materials_image() {
     let (image, _) = draw(&scene("materials.toml", 224, 72), Fresnel::Exact);
-    let expected = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/images/materials.png");
+    let expected = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/images/materials.png");
     assert_image_matches(&image, &expected, Tolerance::default());
 }
 
@@ -132,9 +133,9 @@ fn sweep_the_rim(ior: f64) -> Tangent {
         // every chord inside a sphere has the same length: the refracted
         // ray passes the centre at b/n (Snell's law at the rim)
         let chord = 2.0 * (1.0 - (b / ior).powi(2)).sqrt();
-        let inside = rays
-            .iter()
-            .filter(|r| r.cut.is_none() && !r.shadow && r.origin.length() < 1.0);
+        let inside = rays.iter().filter(|r| {
+            r.cut.is_none() && !r.shadow && r.origin.length() < 1.0
+        });
         for ray in inside {
             let d = ray.direction.normalize();
             let t_mid = -ray.origin.dot(d);
@@ -330,8 +331,10 @@ fn no_energy_is_created() {
         let mut checked = 0;
         for row in (0..world.height).step_by(3) {
             for column in (0..world.width).step_by(3) {
-                for fresnel in [Fresnel::Off, Fresnel::Exact, Fresnel::Schlick] {
-                    let tree = pixel_tree(world, column, row, &DEFAULT_STOP, fresnel);
+                for fresnel in [Fresnel::Off, Fresnel::Exact, Fresnel::Schlick]
+                {
+                    let tree =
+                        pixel_tree(world, column, row, &DEFAULT_STOP, fresnel);
                     check_weights(&tree, name);
                     checked += tree.len();
                 }
@@ -368,8 +371,10 @@ fn check_weights(tree: &[LoggedRay], name: &str) {
 #[test]
 fn same_render_for_one_and_two_threads() {
     let world = scene("bubble.toml", 48, 27);
-    let one = render(&world, &DEFAULT_STOP, Fresnel::Exact, &quiet(Some(1))).unwrap();
-    let two = render(&world, &DEFAULT_STOP, Fresnel::Exact, &quiet(Some(2))).unwrap();
+    let one =
+        render(&world, &DEFAULT_STOP, Fresnel::Exact, &quiet(Some(1))).unwrap();
+    let two =
+        render(&world, &DEFAULT_STOP, Fresnel::Exact, &quiet(Some(2))).unwrap();
     let bits = |image: &Image| {
         image
             .pixels()
@@ -400,10 +405,14 @@ fn rmse(a: &Image, b: &Image) -> f64 {
 fn schlick_is_closer_to_exact_than_no_fresnel() {
     let world = scene("materials.toml", 224, 72);
     let [off, exact, schlick] =
-        [Fresnel::Off, Fresnel::Exact, Fresnel::Schlick].map(|f| draw(&world, f).0);
-    let (off_error, schlick_error) = (rmse(&off, &exact), rmse(&schlick, &exact));
+        [Fresnel::Off, Fresnel::Exact, Fresnel::Schlick]
+            .map(|f| draw(&world, f).0);
+    let (off_error, schlick_error) =
+        (rmse(&off, &exact), rmse(&schlick, &exact));
     // the reference: 0.0337 without Fresnel, 0.0109 with Schlick
     println!("RMSE to exact: off {off_error:.4}, Schlick {schlick_error:.4}");
-    assert!(schlick_error > 0.0 && off_error > 0.0 && rmse(&off, &schlick) > 0.0);
+    assert!(
+        schlick_error > 0.0 && off_error > 0.0 && rmse(&off, &schlick) > 0.0
+    );
     assert!(schlick_error < 0.5 * off_error);
 }

@@ -38,7 +38,8 @@ fn largest_error(n_theta: f64, n_phi: f64) -> (f64, f64) {
         .map(|i| {
             let theta = (f64::from(i) * 0.001).to_radians();
             let c = theta.cos();
-            let error = (schlick(c, n_theta, n_phi) - fresnel(c, n_theta, n_phi)).abs();
+            let error =
+                (schlick(c, n_theta, n_phi) - fresnel(c, n_theta, n_phi)).abs();
             (error, theta.to_degrees())
         })
         .fold((0.0, 0.0), |best, e| if e.0 > best.0 { e } else { best })
@@ -60,7 +61,8 @@ fn largest_error(n_theta: f64, n_phi: f64) -> (f64, f64) {
 /// (almost) equal indices Schlick fails (see `index_matched_surfaces`).
 #[test]
 fn largest_error_table() {
-    let mut table = Table::new(&["material", "way", "largest error", "at θ (°)"]);
+    let mut table =
+        Table::new(&["material", "way", "largest error", "at θ (°)"]);
     for (name, ior) in REFRACTIVE_INDICES {
         let (in_error, in_at) = largest_error(1.0, ior);
         let (out_error, out_at) = largest_error(ior, 1.0);
@@ -73,7 +75,9 @@ fn largest_error_table() {
         if ior > 1.1 {
             assert!(in_error <= 0.08 && out_error <= 0.08, "{name}");
         }
-        for (way, error, at) in [("in", in_error, in_at), ("out", out_error, out_at)] {
+        for (way, error, at) in
+            [("in", in_error, in_at), ("out", out_error, out_at)]
+        {
             table.row(&[
                 name.to_string(),
                 way.to_string(),

@@ -52,7 +52,8 @@ pub fn compare(stage: &Stage, a: &Buffers, b: &Buffers) -> Agreement {
             let (ia, ib) = (a.id_at(column, row), b.id_at(column, row));
             if ia == ib {
                 if ia.is_some() {
-                    let (za, zb) = (a.depth_at(column, row), b.depth_at(column, row));
+                    let (za, zb) =
+                        (a.depth_at(column, row), b.depth_at(column, row));
                     let relative = (za - zb).abs() / za.abs().max(zb.abs());
                     agreement.worst_depth = agreement.worst_depth.max(relative);
                 }
@@ -77,9 +78,14 @@ pub fn compare(stage: &Stage, a: &Buffers, b: &Buffers) -> Agreement {
 
 /// The distance on screen from `p` to the nearest edge of the triangle
 /// (after clipping at the near plane), in pixels.
-pub fn edge_distance(projection: &Projection, corners: &[raystep_core::DVec3; 3], p: DVec2) -> f64 {
+pub fn edge_distance(
+    projection: &Projection,
+    corners: &[raystep_core::DVec3; 3],
+    p: DVec2,
+) -> f64 {
     let view = clip_near(corners.map(|c| projection.view(c)));
-    let screen: Vec<DVec2> = view.iter().map(|&v| projection.to_pixels(v)).collect();
+    let screen: Vec<DVec2> =
+        view.iter().map(|&v| projection.to_pixels(v)).collect();
     let mut best = f64::INFINITY;
     for i in 0..screen.len() {
         let (s, e) = (screen[i], screen[(i + 1) % screen.len()]);

@@ -48,7 +48,8 @@ impl Buffers {
     /// background, then `0`–`9`, `a`–`z`, `A`–`Z` by object index (`#`
     /// beyond).
     pub fn ids_to_ascii(&self) -> String {
-        const DIGITS: &[u8] = b"0123456789abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ";
+        const DIGITS: &[u8] =
+            b"0123456789abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ";
         let mut text = String::new();
         for row in 0..self.height() {
             for column in 0..self.width() {

@@ -69,7 +69,8 @@ mod tests {
         // its neighbour q → p. Both must cut it at the same point, bit for bit.
         let p = DVec3::new(0.3, -0.7, 2.9);
         let q = DVec3::new(-1.1, 0.45, -0.37);
-        let (left, right) = (DVec3::new(-2.0, 1.0, 3.0), DVec3::new(2.0, -1.0, 1.7));
+        let (left, right) =
+            (DVec3::new(-2.0, 1.0, 3.0), DVec3::new(2.0, -1.0, 1.7));
         let cut = |corners| {
             let out = clip_near(corners);
             out.iter()
@@ -79,7 +80,8 @@ mod tests {
         };
         let one = cut([p, q, left]);
         let other = cut([q, p, right]);
-        let on_edge = |v: &DVec3| other.iter().any(|w| w.to_array() == v.to_array());
+        let on_edge =
+            |v: &DVec3| other.iter().any(|w| w.to_array() == v.to_array());
         assert_eq!(
             one.iter().filter(|v| on_edge(v)).count(),
             1,

@@ -75,9 +75,14 @@ mod tests {
             let ray = camera.pixel_ray(column, row, 32, 18);
             let view = projection.view(ray.at(3.7));
             // the view depth of a point on a unit ray is t·(D·forward)
-            assert!((view.z - 3.7 * ray.direction.dot(camera.forward)).abs() < 1e-12);
+            assert!(
+                (view.z - 3.7 * ray.direction.dot(camera.forward)).abs()
+                    < 1e-12
+            );
             let p = projection.to_pixels(view);
-            assert!((p - Projection::pixel_centre(column, row)).length() < 1e-9);
+            assert!(
+                (p - Projection::pixel_centre(column, row)).length() < 1e-9
+            );
         }
     }
 }

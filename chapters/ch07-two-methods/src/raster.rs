@@ -3,8 +3,8 @@
 use raystep_core::DVec2;
 
 use crate::{
-    Buffers, DepthBuffer, Projection, Stage, barycentric, clip_near, covers, perspective_depth,
-    shade_pixel,
+    Buffers, DepthBuffer, Projection, Stage, barycentric, clip_near, covers,
+    perspective_depth, shade_pixel,
 };
 
 /// What a rasterization did, counted.
@@ -48,7 +48,8 @@ pub fn rasterize(stage: &Stage) -> (Buffers, RasterCounts) {
             counts.triangles += 1;
             // Step 3: for each pixel whose centre may be inside (the
             // triangle's bounding box, clipped to the image) …
-            let Some((columns, rows)) = pixel_box(&screen, width, height) else {
+            let Some((columns, rows)) = pixel_box(&screen, width, height)
+            else {
                 continue;
             };
             for row in rows {
@@ -71,7 +72,8 @@ pub fn rasterize(stage: &Stage) -> (Buffers, RasterCounts) {
                     // Step 5: shade. The point is found from its depth along
                     // the pixel's view direction, as a deferred renderer does.
                     counts.shaded += 1;
-                    let ray = world.camera.pixel_ray(column, row, width, height);
+                    let ray =
+                        world.camera.pixel_ray(column, row, width, height);
                     let t = z / ray.direction.dot(world.camera.forward);
                     let i = row as usize * width as usize + column as usize;
                     buffers.id[i] = Some(triangle.object);
@@ -79,7 +81,13 @@ pub fn rasterize(stage: &Stage) -> (Buffers, RasterCounts) {
                     buffers.color.set(
                         column,
                         row,
-                        shade_pixel(world, &ray, t, triangle.object, triangle.normal),
+                        shade_pixel(
+                            world,
+                            &ray,
+                            t,
+                            triangle.object,
+                            triangle.normal,
+                        ),
                     );
                 }
             }

@@ -18,7 +18,8 @@ pub fn raycast(stage: &Stage) -> Buffers {
             // Step 1: shoot the ray through its centre.
             let ray = world.camera.pixel_ray(column, row, width, height);
             // Step 2: for each object, test it; keep the closest.
-            let Some((index, hit)) = world.closest_hit(&ray, Interval::FORWARD) else {
+            let Some((index, hit)) = world.closest_hit(&ray, Interval::FORWARD)
+            else {
                 continue;
             };
             // Step 3: shade; note the depth along the view direction.

@@ -11,7 +11,13 @@ use raystep_render::Rgb;
 /// visible (Sᵢ = 1). Rasterization alone knows nothing of other objects
 /// when it shades a pixel, so it has no shadow rays, and no reflected or
 /// refracted rays either; the ray caster is held to the same rule here.
-pub fn shade_pixel(world: &World, ray: &Ray, t: f64, object: usize, normal: DVec3) -> Rgb {
+pub fn shade_pixel(
+    world: &World,
+    ray: &Ray,
+    t: f64,
+    object: usize,
+    normal: DVec3,
+) -> Rgb {
     let hit = Hit {
         t,
         point: ray.at(t),

@@ -66,7 +66,8 @@ impl Stage {
                 });
             };
             // the same polygon the world holds (it was built without error)
-            let normal = Polygon::new(vertices.clone()).map_or(DVec3::ZERO, |p| p.plane().normal);
+            let normal = Polygon::new(vertices.clone())
+                .map_or(DVec3::ZERO, |p| p.plane().normal);
             let v = vertices;
             for k in 1..v.len() - 1 {
                 triangles.push(Triangle {

@@ -63,7 +63,9 @@ fn fan_stage() -> Stage {
          [materials.dark]\nkd = 0.4\n",
     );
     // from pixel coordinates to the plane z = 0
-    let at = |px: f64, py: f64| [(px - 16.0) / FAN_SCALE, (16.0 - py) / FAN_SCALE, 0.0];
+    let at = |px: f64, py: f64| {
+        [(px - 16.0) / FAN_SCALE, (16.0 - py) / FAN_SCALE, 0.0]
+    };
     let hub = at(16.5, 16.5);
     // the outline, every 3 pixels, clockwise on screen from the top left
     let mut ring = Vec::new();
@@ -134,7 +136,8 @@ fn marked(buffers: &Buffers, agreement: &Agreement) -> String {
         .lines()
         .map(|l| l.chars().collect())
         .collect();
-    for &(column, row) in agreement.on_edges.iter().chain(&agreement.elsewhere) {
+    for &(column, row) in agreement.on_edges.iter().chain(&agreement.elsewhere)
+    {
         rows[row as usize][column as usize] = '!';
     }
     rows.iter()
@@ -160,7 +163,8 @@ fn rasterized_depths_are_the_ray_casters() {
             if id.is_none() || id != cast.id_at(column, row) {
                 continue;
             }
-            let (zr, zc) = (raster.depth_at(column, row), cast.depth_at(column, row));
+            let (zr, zc) =
+                (raster.depth_at(column, row), cast.depth_at(column, row));
             assert!(
                 relative(zr, zc) <= 1e-9,
                 "pixel ({column}, {row}), object {id:?}: z-buffer {zr}, ray caster {zc}"

@@ -144,8 +144,9 @@ fn coverage_tables() {
         ("half a pixel, the half with the centre on its edge",
             [p(3.0, 2.0), p(3.0, 3.0), p(2.0, 3.0)]),
     ];
-    let mut text =
-        String::from("# covered, + covered on an edge, o on an edge but not covered, . outside\n");
+    let mut text = String::from(
+        "# covered, + covered on an edge, o on an edge but not covered, . outside\n",
+    );
     for (name, t) in triangles {
         let table = coverage_table(&t, 8, 8);
         assert_eq!(
@@ -167,7 +168,11 @@ fn coverage_tables() {
 }
 
 /// How many of `triangles` cover each pixel centre of the grid, row by row.
-fn counts(triangles: &[[DVec2; 3]], width: u32, height: u32) -> Vec<Vec<usize>> {
+fn counts(
+    triangles: &[[DVec2; 3]],
+    width: u32,
+    height: u32,
+) -> Vec<Vec<usize>> {
     (0..height)
         .map(|row| {
             (0..width)
@@ -191,12 +196,14 @@ fn count_text(counts: &[Vec<usize>]) -> String {
 /// Which triangle covers each pixel centre, as a letter (`a`, `b`, …,
 /// `A`, … in the order given; `*` if more than one, `.` none).
 fn owner_text(triangles: &[[DVec2; 3]], width: u32, height: u32) -> String {
-    const NAMES: &[u8] = b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ";
+    const NAMES: &[u8] =
+        b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ";
     let mut text = String::new();
     for row in 0..height {
         for column in 0..width {
             let q = centre(column, row);
-            let mut which = triangles.iter().enumerate().filter(|(_, t)| covers(t, q));
+            let mut which =
+                triangles.iter().enumerate().filter(|(_, t)| covers(t, q));
             text.push(match (which.next(), which.next()) {
                 (None, _) => '.',
                 (Some((i, _)), None) => char::from(NAMES[i]),
@@ -213,7 +220,13 @@ fn owner_text(triangles: &[[DVec2; 3]], width: u32, height: u32) -> String {
 /// exactly once: its top and left sides are its own, its right and bottom
 /// sides are not, so the centres with lo ≤ x < hi and lo ≤ y < hi: no
 /// gap inside, no double hit anywhere, no hit outside.
-fn assert_tiles_the_square(name: &str, triangles: &[[DVec2; 3]], lo: f64, hi: f64, size: u32) {
+fn assert_tiles_the_square(
+    name: &str,
+    triangles: &[[DVec2; 3]],
+    lo: f64,
+    hi: f64,
+    size: u32,
+) {
     let counts = counts(triangles, size, size);
     let (mut gaps, mut doubles, mut outside) = (0, 0, 0);
     for (row, line) in counts.iter().enumerate() {
@@ -289,11 +302,13 @@ fn a_fan_around_a_pixel_centre_covers_each_pixel_once() {
 /// through pixel centres, and 4 or 8 triangles meet at the grid's
 /// vertices.
 fn grid() -> Vec<[DVec2; 3]> {
-    let at = |i: u32, j: u32| p(0.5 + 3.0 * f64::from(i), 0.5 + 3.0 * f64::from(j));
+    let at =
+        |i: u32, j: u32| p(0.5 + 3.0 * f64::from(i), 0.5 + 3.0 * f64::from(j));
     let mut triangles = Vec::new();
     for j in 0..3 {
         for i in 0..3 {
-            let (tl, tr, br, bl) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+            let (tl, tr, br, bl) =
+                (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
             let halves = if (i + j) % 2 == 0 {
                 [[tl, tr, br], [tl, br, bl]] // split on the ↘ diagonal
             } else {
@@ -342,7 +357,11 @@ fn degenerate_triangles_cover_nothing() {
             for q in [t[0], t[1], t[2], (t[0] + t[1]) / 2.0] {
                 assert!(!covers(&t, q), "{name} covers {q}, on it");
             }
-            assert_eq!(barycentric(&t, p(2.5, 2.5)), None, "{name} has weights");
+            assert_eq!(
+                barycentric(&t, p(2.5, 2.5)),
+                None,
+                "{name} has weights"
+            );
         }
     }
 }
@@ -393,10 +412,12 @@ fn lattice_point() -> impl Strategy<Value = DVec2> {
 
 /// A triangle with corners anywhere in [−10, 10]², not too thin.
 fn real_triangle() -> impl Strategy<Value = [DVec2; 3]> {
-    proptest::array::uniform3((-10.0..10.0f64, -10.0..10.0f64).prop_map(|(x, y)| p(x, y)))
-        .prop_filter("area of at least ½", |t| {
-            cross(t[0], t[1], t[2]).abs() >= 1.0
-        })
+    proptest::array::uniform3(
+        (-10.0..10.0f64, -10.0..10.0f64).prop_map(|(x, y)| p(x, y)),
+    )
+    .prop_filter("area of at least ½", |t| {
+        cross(t[0], t[1], t[2]).abs() >= 1.0
+    })
 }
 
 proptest! {

@@ -2,7 +2,10 @@
 //! behind the camera, and crossing the near plane (in front of the eye
 //! and behind it at once, where the perspective divide would flip or
 //! blow up). These use both exercises.
-use ch07::{DVec3, Mesh, NEAR, Projection, Stage, clip_near, compare, rasterize, raycast};
+use ch07::{
+    DVec3, Mesh, NEAR, Projection, Stage, clip_near, compare, rasterize,
+    raycast,
+};
 
 mod common;
 use common::{polygon, stage_from};
@@ -25,15 +28,19 @@ fn stage(objects: &[(&[[f64; 3]], &str)]) -> Stage {
 
 /// A floor triangle reaching 30 units behind the eye on both sides and 30
 /// ahead: it passes under the eye, two of its corners are behind it.
-const FLOOR: &[[f64; 3]] = &[[-30.0, 0.0, 30.0], [30.0, 0.0, 30.0], [0.0, 0.0, -30.0]];
+const FLOOR: &[[f64; 3]] =
+    &[[-30.0, 0.0, 30.0], [30.0, 0.0, 30.0], [0.0, 0.0, -30.0]];
 /// A wall at x = 1.5 from 5 units behind the eye to 6 ahead: one corner
 /// behind, so clipping leaves a quadrilateral (two triangles).
-const WALL: &[[f64; 3]] = &[[1.5, 0.3, 5.0], [1.5, 0.3, -6.0], [1.5, 2.5, -6.0]];
+const WALL: &[[f64; 3]] =
+    &[[1.5, 0.3, 5.0], [1.5, 0.3, -6.0], [1.5, 2.5, -6.0]];
 /// A triangle 3 to 4 units behind the eye.
-const BEHIND: &[[f64; 3]] = &[[-1.0, 0.5, 3.0], [1.0, 0.5, 4.0], [0.0, 2.0, 3.0]];
+const BEHIND: &[[f64; 3]] =
+    &[[-1.0, 0.5, 3.0], [1.0, 0.5, 4.0], [0.0, 2.0, 3.0]];
 /// A triangle in the plane x = 0, which holds the eye: seen edge on, it
 /// projects onto one line, a triangle of zero area on screen.
-const EDGE_ON: &[[f64; 3]] = &[[0.0, 0.0, -2.0], [0.0, 0.5, -5.0], [0.0, 2.0, -3.0]];
+const EDGE_ON: &[[f64; 3]] =
+    &[[0.0, 0.0, -2.0], [0.0, 0.5, -5.0], [0.0, 2.0, -3.0]];
 
 /// How many of the stage's triangles are in front of, across and behind
 /// the near plane.
@@ -213,9 +220,10 @@ fn a_fan_cut_by_the_near_plane_stays_watertight() {
     let (mut inside, mut gaps, mut overreach) = (0, 0, 0);
     for row in 0..world.height {
         for column in 0..world.width {
-            let ray = world
-                .camera
-                .pixel_ray(column, row, world.width, world.height);
+            let ray =
+                world
+                    .camera
+                    .pixel_ray(column, row, world.width, world.height);
             let t = -ray.origin.y / ray.direction.y;
             let p = ray.origin + ray.direction * t;
             let drawn = raster.id_at(column, row).is_some();

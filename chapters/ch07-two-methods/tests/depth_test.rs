@@ -64,7 +64,11 @@ fn only_the_tested_pixel_changes() {
                 .iter()
                 .find(|&&(c, r, _)| (c, r) == (column, row))
                 .map_or(INF, |&(_, _, z)| z);
-            assert_eq!(buffer.get(column, row), expected, "pixel ({column}, {row})");
+            assert_eq!(
+                buffer.get(column, row),
+                expected,
+                "pixel ({column}, {row})"
+            );
             let i = (row * width + column) as usize;
             assert_eq!(buffer.depths()[i], expected, "depths()[{i}]");
         }
@@ -150,7 +154,8 @@ impl Receding {
         let mut samples = Vec::new();
         for row in 0..height {
             for column in 0..width {
-                let lambda = weights(screen, Projection::pixel_centre(column, row));
+                let lambda =
+                    weights(screen, Projection::pixel_centre(column, row));
                 if lambda.iter().any(|&l| l < 0.0) {
                     continue;
                 }
@@ -186,7 +191,9 @@ struct Sample {
 impl Sample {
     /// What interpolating z linearly on screen gives: wrong.
     fn linear(&self) -> f64 {
-        self.lambda[0] * self.z[0] + self.lambda[1] * self.z[1] + self.lambda[2] * self.z[2]
+        self.lambda[0] * self.z[0]
+            + self.lambda[1] * self.z[1]
+            + self.lambda[2] * self.z[2]
     }
 }
 
@@ -205,7 +212,8 @@ fn perspective_depth_is_the_depth_of_the_point_seen() {
     assert!(samples.len() > 100, "only {} pixels", samples.len());
     let (mut worst, mut worst_linear) = (0.0f64, 0.0f64);
     for s in &samples {
-        let (column, row, lambda, z, exact) = (s.column, s.row, s.lambda, s.z, s.exact);
+        let (column, row, lambda, z, exact) =
+            (s.column, s.row, s.lambda, s.z, s.exact);
         let got = perspective_depth(lambda, z);
         assert!(
             relative(got, exact) <= 1e-9,
@@ -229,7 +237,8 @@ fn perspective_depth_is_the_depth_of_the_point_seen() {
 fn receding_depth_table() {
     let scene = Receding::new();
     let column = scene.projection.width / 2;
-    let mut table = Table::new(&["row", "depth seen", "perspective_depth", "linear z"]);
+    let mut table =
+        Table::new(&["row", "depth seen", "perspective_depth", "linear z"]);
     for s in &scene.samples() {
         if s.column != column || s.row % 2 != 0 {
             continue;

@@ -66,7 +66,9 @@ fn raster_counts() {
         "shaded",
         "pixels shown",
     ]);
-    for (subdivisions, width, height) in [(0, 64, 36), (2, 64, 36), (2, 160, 90)] {
+    for (subdivisions, width, height) in
+        [(0, 64, 36), (2, 64, 36), (2, 160, 90)]
+    {
         let (buffers, counts) = rasterize(&shapes(subdivisions, width, height));
         let shown = buffers.id.iter().filter(|id| id.is_some()).count() as u64;
         assert!(counts.tested >= counts.covered, "{counts:?}");

@@ -7,12 +7,14 @@ use ch07::{Mesh, Stage, StageError, shapes};
 /// The Stanford bunny beside the workspace: `../shared/meshes/bunny.obj`
 /// from the workspace root (this crate is two folders below it).
 fn bunny() -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/meshes/bunny.obj")
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/meshes/bunny.obj")
 }
 
 #[test]
 fn the_bunny_has_3674_triangles() {
-    let mesh = Mesh::load_obj(&bunny()).expect("../shared/meshes/bunny.obj beside the workspace");
+    let mesh = Mesh::load_obj(&bunny())
+        .expect("../shared/meshes/bunny.obj beside the workspace");
     assert_eq!(mesh.triangles.len(), 3674);
     assert!(
         mesh.triangles
@@ -25,8 +27,10 @@ fn the_bunny_has_3674_triangles() {
     // added to a stage, each triangle becomes an object of its own (those
     // of zero area, if any, are left out and counted)
     let mut stage = shapes(0, 16, 9);
-    let (objects, triangles) = (stage.world.objects.len(), stage.triangles.len());
-    let skipped = stage.add_mesh(&mesh.fitted(ch07::DVec3::new(0.0, 0.8, 0.2), 1.6), 0);
+    let (objects, triangles) =
+        (stage.world.objects.len(), stage.triangles.len());
+    let skipped =
+        stage.add_mesh(&mesh.fitted(ch07::DVec3::new(0.0, 0.8, 0.2), 1.6), 0);
     assert_eq!(stage.triangles.len() - triangles + skipped, 3674);
     assert_eq!(stage.world.objects.len() - objects + skipped, 3674);
 }
@@ -64,15 +68,20 @@ fn a_sphere_or_a_plane_is_not_a_polygon() {
         ),
     ] {
         let text = format!("{head}[[objects]]\n{object}\n");
-        let scene = raystep_scene::parse(&text, "mixed.toml").expect("the scene parses");
-        let error = Stage::from_scene(&scene, "mixed.toml").expect_err("not all polygons");
+        let scene = raystep_scene::parse(&text, "mixed.toml")
+            .expect("the scene parses");
+        let error = Stage::from_scene(&scene, "mixed.toml")
+            .expect_err("not all polygons");
         match &error {
             StageError::NotAPolygon {
                 file,
                 index,
                 kind: k,
             } => {
-                assert_eq!((file.as_str(), *index, *k), ("mixed.toml", 1, kind));
+                assert_eq!(
+                    (file.as_str(), *index, *k),
+                    ("mixed.toml", 1, kind)
+                );
             }
             other => panic!("expected NotAPolygon, got {other:?}"),
         }

@@ -92,7 +92,11 @@ fn bless_requested() -> bool {
 /// the file is left alone so re-blessing does not churn images in version
 /// control. **A blessed image is only as right as the code that rendered
 /// it: open it and look at it before committing it.**
-pub fn assert_image_matches(actual: &Image, expected_png: &Path, tolerance: Tolerance) {
+pub fn assert_image_matches(
+    actual: &Image,
+    expected_png: &Path,
+    tolerance: Tolerance,
+) {
     if let Err(message) = compare(
         actual,
         expected_png,
@@ -130,7 +134,9 @@ fn compare(
     diff_dir: &Path,
 ) -> Result<(), String> {
     let expected = match expected_png.try_exists() {
-        Ok(true) => Some(Image::read_png(expected_png).map_err(|e| e.to_string())),
+        Ok(true) => {
+            Some(Image::read_png(expected_png).map_err(|e| e.to_string()))
+        }
         Ok(false) => None,
         Err(e) => Some(Err(format!(
             "cannot tell whether {} exists: {e}",
@@ -149,9 +155,15 @@ fn compare(
             );
             return Ok(());
         }
-        if let Some(parent) = expected_png.parent().filter(|p| !p.as_os_str().is_empty()) {
-            fs::create_dir_all(parent)
-                .map_err(|e| format!("RAYSTEP_BLESS: cannot create {}: {e}", parent.display()))?;
+        if let Some(parent) =
+            expected_png.parent().filter(|p| !p.as_os_str().is_empty())
+        {
+            fs::create_dir_all(parent).map_err(|e| {
+                format!(
+                    "RAYSTEP_BLESS: cannot create {}: {e}",
+                    parent.display()
+                )
+            })?;
         }
         actual
             .write_png(expected_png)
@@ -167,7 +179,8 @@ fn compare(
         .file_stem()
         .map_or("image".into(), |s| s.to_string_lossy());
     let out = |kind: &str| diff_dir.join(format!("{name}.{kind}.png"));
-    let (actual_out, expected_out, diff_out) = (out("actual"), out("expected"), out("diff"));
+    let (actual_out, expected_out, diff_out) =
+        (out("actual"), out("expected"), out("diff"));
     let bless_hint = "If the new render is right, run the test again with RAYSTEP_BLESS=1 to \
         make it the reference, and look at the image before you commit it.";
 
@@ -175,13 +188,16 @@ fn compare(
         Some(Ok(expected)) => expected,
         missing_or_unreadable => {
             let problem = match missing_or_unreadable {
-                Some(Err(e)) => format!("the expected image cannot be used: {e}"),
+                Some(Err(e)) => {
+                    format!("the expected image cannot be used: {e}")
+                }
                 _ => format!(
                     "the expected image {} does not exist",
                     expected_png.display()
                 ),
             };
-            let written = write_files(diff_dir, (&actual_out, actual), None, None);
+            let written =
+                write_files(diff_dir, (&actual_out, actual), None, None);
             return Err(format!(
                 "{problem}. The render ({}×{}) was {written}. {bless_hint}",
                 actual.width(),
@@ -232,7 +248,9 @@ fn compare(
 
 /// Compares two images in 8-bit sRGB.
 fn judge(actual: &Image, expected: &Image, tolerance: Tolerance) -> Outcome {
-    if (actual.width(), actual.height()) != (expected.width(), expected.height()) {
+    if (actual.width(), actual.height())
+        != (expected.width(), expected.height())
+    {
         return Outcome::SizeMismatch {
             expected: (expected.width(), expected.height()),
         };
@@ -250,7 +268,8 @@ fn judge(actual: &Image, expected: &Image, tolerance: Tolerance) -> Outcome {
             largest = (d, (i % width) as u32, (i / width) as u32);
         }
     }
-    let allowed = tolerance.max_differing_fraction * actual.pixels().len() as f64;
+    let allowed =
+        tolerance.max_differing_fraction * actual.pixels().len() as f64;
     if differing as f64 <= allowed {
         Outcome::Matches
     } else {
@@ -283,11 +302,14 @@ fn diff_image(actual: &Image, expected: &Image, per_channel: u8) -> Image {
     for y in 0..height {
         for x in 0..width {
             let pixel = match (at(&a, actual, x, y), at(&e, expected, x, y)) {
-                (Some(pa), Some(pe)) if channel_difference(&pa, &pe) <= per_channel => {
+                (Some(pa), Some(pe))
+                    if channel_difference(&pa, &pe) <= per_channel =>
+                {
                     // faded grey: sRGB luma squeezed into levels 96..=181
-                    let luma =
-                        (299 * u32::from(pe[0]) + 587 * u32::from(pe[1]) + 114 * u32::from(pe[2]))
-                            / 1000;
+                    let luma = (299 * u32::from(pe[0])
+                        + 587 * u32::from(pe[1])
+                        + 114 * u32::from(pe[2]))
+                        / 1000;
                     let grey = (96 + luma / 3) as u8;
                     [grey; 3]
                 }
@@ -298,7 +320,8 @@ fn diff_image(actual: &Image, expected: &Image, per_channel: u8) -> Image {
         }
     }
     // width, height ≥ 1 and the length is 3·w·h, so this cannot fail.
-    Image::from_srgb8(width, height, &bytes).expect("a diff image of a valid size")
+    Image::from_srgb8(width, height, &bytes)
+        .expect("a diff image of a valid size")
 }
 
 /// Writes the render, a copy of the expected file and the diff image into
@@ -320,9 +343,13 @@ fn write_files(
         )
     };
     let copy = |(from, to): (&Path, &Path)| {
-        let result = fs::copy(from, to)
-            .map(|_| ())
-            .map_err(|e| format!("could not copy {} to {}: {e}", from.display(), to.display()));
+        let result = fs::copy(from, to).map(|_| ()).map_err(|e| {
+            format!(
+                "could not copy {} to {}: {e}",
+                from.display(),
+                to.display()
+            )
+        });
         (to.display().to_string(), result)
     };
     let results = [
@@ -340,7 +367,9 @@ fn write_files(
     let mut text = match written.as_slice() {
         [] => "not written".to_string(),
         [one] => format!("written to {one}"),
-        [init @ .., last] => format!("written to {} and {last}", init.join(", ")),
+        [init @ .., last] => {
+            format!("written to {} and {last}", init.join(", "))
+        }
     };
     if !failed.is_empty() {
         text.push_str(&format!(" (but {})", failed.join("; ")));
@@ -356,7 +385,8 @@ mod tests {
 
     /// A folder of its own for one test, emptied first.
     fn scratch(test: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("raystep-check-{}-{test}", std::process::id()));
+        let dir = std::env::temp_dir()
+            .join(format!("raystep-check-{}-{test}", std::process::id()));
         let _ = fs::remove_dir_all(&dir);
         fs::create_dir_all(&dir).unwrap();
         dir
@@ -391,7 +421,9 @@ mod tests {
     }
 
     fn assert_matches_in(dir: &Path, actual: &Image, expected: &Path) {
-        if let Err(m) = compare(actual, expected, Tolerance::default(), false, dir) {
+        if let Err(m) =
+            compare(actual, expected, Tolerance::default(), false, dir)
+        {
             panic!("{m}");
         }
     }
@@ -411,9 +443,14 @@ mod tests {
         let reference = dir.join("picture.png");
         picture().write_png(&reference).unwrap();
         // one pixel far off: 1 of 1200 ≤ 0.1 %
-        assert_matches_in(&dir, &nudged(&picture(), &[(7, 3)], 100), &reference);
+        assert_matches_in(
+            &dir,
+            &nudged(&picture(), &[(7, 3)], 100),
+            &reference,
+        );
         // every pixel off by 2 levels (where not clipped)
-        let all: Vec<_> = (0..30).flat_map(|y| (0..40).map(move |x| (x, y))).collect();
+        let all: Vec<_> =
+            (0..30).flat_map(|y| (0..40).map(move |x| (x, y))).collect();
         assert_matches_in(&dir, &nudged(&picture(), &all, -2), &reference);
         assert!(
             fs::read_dir(&dir).unwrap().count() == 1,
@@ -428,16 +465,21 @@ mod tests {
         let reference = dir.join("raystep-check-selftest.png");
         picture().write_png(&reference).unwrap();
         let diffs = diff_dir();
-        let out = |kind: &str| diffs.join(format!("raystep-check-selftest.{kind}.png"));
+        let out = |kind: &str| {
+            diffs.join(format!("raystep-check-selftest.{kind}.png"))
+        };
         for kind in ["actual", "expected", "diff"] {
             let _ = fs::remove_file(out(kind));
         }
         let actual = nudged(&picture(), &[(1, 1), (2, 1), (3, 2)], 60);
-        let message = panic_message(|| assert_matches_in(&diffs, &actual, &reference))
-            .expect("three differing pixels must fail");
+        let message =
+            panic_message(|| assert_matches_in(&diffs, &actual, &reference))
+                .expect("three differing pixels must fail");
         assert!(message.contains("3 of 1200 pixels"), "{message}");
         assert!(
-            message.contains("the largest difference is 60 levels, at pixel (1, 1)"),
+            message.contains(
+                "the largest difference is 60 levels, at pixel (1, 1)"
+            ),
             "{message}"
         );
         assert!(!message.contains('\n'), "one paragraph: {message}");
@@ -472,8 +514,9 @@ mod tests {
     fn a_missing_expected_file_panics_naming_it() {
         let dir = scratch("missing");
         let reference = dir.join("nowhere.png");
-        let message = panic_message(|| assert_matches_in(&dir, &picture(), &reference))
-            .expect("a missing reference must fail");
+        let message =
+            panic_message(|| assert_matches_in(&dir, &picture(), &reference))
+                .expect("a missing reference must fail");
         assert!(
             message.contains(&reference.display().to_string()),
             "{message}"
@@ -489,7 +532,9 @@ mod tests {
         let dir = scratch("size");
         let reference = dir.join("small.png");
         Image::new(4, 3).write_png(&reference).unwrap();
-        let message = panic_message(|| assert_matches_in(&dir, &picture(), &reference)).unwrap();
+        let message =
+            panic_message(|| assert_matches_in(&dir, &picture(), &reference))
+                .unwrap();
         assert!(
             message.contains("40×30 pixels but the expected image is 4×3"),
             "{message}"
@@ -503,7 +548,8 @@ mod tests {
     fn blessing_writes_the_reference_but_keeps_a_matching_one() {
         let dir = scratch("bless");
         let reference = dir.join("new").join("blessed.png");
-        compare(&picture(), &reference, Tolerance::default(), true, &dir).unwrap();
+        compare(&picture(), &reference, Tolerance::default(), true, &dir)
+            .unwrap();
         assert_eq!(
             Image::read_png(&reference).unwrap().to_srgb8(),
             picture().to_srgb8()
@@ -515,7 +561,8 @@ mod tests {
         assert_eq!(fs::read(&reference).unwrap(), before);
         // a real change is written
         let changed = nudged(&picture(), &[(0, 0), (1, 0), (2, 0)], 50);
-        compare(&changed, &reference, Tolerance::default(), true, &dir).unwrap();
+        compare(&changed, &reference, Tolerance::default(), true, &dir)
+            .unwrap();
         assert_eq!(
             Image::read_png(&reference).unwrap().to_srgb8(),
             changed.to_srgb8()

@@ -18,7 +18,9 @@ pub fn num_places(x: f64, places: usize) -> String {
     // "-0.0000" → "0.0000": the sign of a rounded zero is an accident of
     // the operation order.
     match s.strip_prefix('-') {
-        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => {
+            rest.to_string()
+        }
         _ => s,
     }
 }

@@ -14,7 +14,8 @@ pub fn seeded(cases: u32) -> Config {
 /// Unit vectors in every direction (from the cube [−1, 1]³, too-short
 /// vectors skipped, normalised): for directions, normals and lights in
 /// property tests.
-pub fn unit_vector() -> impl proptest::strategy::Strategy<Value = raystep_core::DVec3> {
+pub fn unit_vector()
+-> impl proptest::strategy::Strategy<Value = raystep_core::DVec3> {
     use proptest::strategy::Strategy;
     (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64)
         .prop_filter("not too short", |(x, y, z)| x * x + y * y + z * z > 0.01)

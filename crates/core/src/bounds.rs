@@ -3,7 +3,8 @@ use glam::DVec3;
 
 /// γ₃ = 3u / (1 − 3u), u = 2⁻⁵³: a bound on the relative rounding error
 /// of three floating-point operations (pbrt-v4, section 6.8.1).
-const GAMMA_3: f64 = 3.0 * (f64::EPSILON / 2.0) / (1.0 - 3.0 * (f64::EPSILON / 2.0));
+const GAMMA_3: f64 =
+    3.0 * (f64::EPSILON / 2.0) / (1.0 - 3.0 * (f64::EPSILON / 2.0));
 
 /// An axis-aligned bounding box: the points with `min ≤ p ≤ max` in every
 /// coordinate.
@@ -130,14 +131,20 @@ mod tests {
 
     #[test]
     fn around_union_and_contains() {
-        let b = Aabb::around([DVec3::new(1.0, -2.0, 3.0), DVec3::new(-1.0, 2.0, 0.0)]);
+        let b = Aabb::around([
+            DVec3::new(1.0, -2.0, 3.0),
+            DVec3::new(-1.0, 2.0, 0.0),
+        ]);
         assert_eq!(b.min, DVec3::new(-1.0, -2.0, 0.0));
         assert_eq!(b.max, DVec3::new(1.0, 2.0, 3.0));
         assert!(b.contains(DVec3::ZERO) && !b.contains(DVec3::splat(5.0)));
         assert!(Aabb::EMPTY.is_empty() && Aabb::around([]).is_empty());
         assert_eq!(Aabb::EMPTY.union(b), b);
         assert!(!Aabb::EVERYTHING.is_empty());
-        assert!(Aabb::new(DVec3::ZERO, DVec3::new(0.0, 1.0, 1.0)).contains(DVec3::Y));
+        assert!(
+            Aabb::new(DVec3::ZERO, DVec3::new(0.0, 1.0, 1.0))
+                .contains(DVec3::Y)
+        );
     }
 
     #[test]
@@ -163,7 +170,8 @@ mod tests {
         // 0·∞ = NaN in the x slab: the ray lies in the face x = 0.
         for x in [0.0, 1.0] {
             let ray = Ray::new(DVec3::new(x, -1.0, 0.5), DVec3::Y);
-            let inside = unit().hit(&ray, Interval::FORWARD).expect("in the face");
+            let inside =
+                unit().hit(&ray, Interval::FORWARD).expect("in the face");
             assert!(!inside.min.is_nan() && !inside.max.is_nan());
             assert_eq!(inside.min, 1.0);
         }
@@ -171,13 +179,15 @@ mod tests {
         let outside = Ray::new(DVec3::new(-1e-300, -1.0, 0.5), DVec3::Y);
         assert!(unit().hit(&outside, Interval::FORWARD).is_none());
         // negative zero directions behave like positive ones
-        let ray = Ray::new(DVec3::new(0.0, -1.0, 0.5), DVec3::new(-0.0, 1.0, 0.0));
+        let ray =
+            Ray::new(DVec3::new(0.0, -1.0, 0.5), DVec3::new(-0.0, 1.0, 0.0));
         assert!(unit().hit(&ray, Interval::FORWARD).is_some());
     }
 
     #[test]
     fn empty_and_unbounded_boxes() {
-        let ray = Ray::new(DVec3::new(0.3, 0.2, 0.1), DVec3::new(1.0, 2.0, 3.0));
+        let ray =
+            Ray::new(DVec3::new(0.3, 0.2, 0.1), DVec3::new(1.0, 2.0, 3.0));
         assert!(Aabb::EMPTY.hit(&ray, Interval::UNIVERSE).is_none());
         assert_eq!(
             Aabb::EVERYTHING.hit(&ray, Interval::FORWARD),
@@ -195,7 +205,10 @@ mod tests {
     fn rays_aimed_at_the_boundary_never_miss() {
         let boxes = [
             Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0)),
-            Aabb::new(DVec3::new(1e6, -3.0, 7.0), DVec3::new(1e6 + 0.1, 2.0, 7.3)),
+            Aabb::new(
+                DVec3::new(1e6, -3.0, 7.0),
+                DVec3::new(1e6 + 0.1, 2.0, 7.3),
+            ),
             Aabb::new(DVec3::splat(1e-7), DVec3::splat(3e-7)),
         ];
         let mut seed: u64 = 7;
@@ -211,13 +224,15 @@ mod tests {
             for k in 0..20_000 {
                 // a point on the boundary: one, two or three coordinates
                 // pinned to a face
-                let mut target = b.min + size * DVec3::new(next(), next(), next());
+                let mut target =
+                    b.min + size * DVec3::new(next(), next(), next());
                 for axis in 0..=(k % 3) {
                     let a = (k / 3 + axis) % 3;
                     target[a] = if next() < 0.5 { b.min[a] } else { b.max[a] };
                 }
                 let from = target
-                    + DVec3::new(next() - 0.5, next() - 0.5, next() - 0.5).normalize()
+                    + DVec3::new(next() - 0.5, next() - 0.5, next() - 0.5)
+                        .normalize()
                         * 1e3
                         * size.max_element().max(1.0);
                 let ray = Ray::new(from, target - from);

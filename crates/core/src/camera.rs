@@ -53,13 +53,20 @@ impl Camera {
     pub fn ray(&self, u: f64, v: f64) -> Ray {
         let x = (2.0 * u - 1.0) * self.half_height * self.aspect;
         let y = (1.0 - 2.0 * v) * self.half_height;
-        let direction = (self.forward + x * self.right + y * self.up).normalize();
+        let direction =
+            (self.forward + x * self.right + y * self.up).normalize();
         Ray::new(self.eye, direction)
     }
 
     /// The ray through the centre of pixel `(column, row)` of a
     /// `width × height` image, rows counted from the top.
-    pub fn pixel_ray(&self, column: u32, row: u32, width: u32, height: u32) -> Ray {
+    pub fn pixel_ray(
+        &self,
+        column: u32,
+        row: u32,
+        width: u32,
+        height: u32,
+    ) -> Ray {
         let u = (f64::from(column) + 0.5) / f64::from(width);
         let v = (f64::from(row) + 0.5) / f64::from(height);
         self.ray(u, v)
@@ -72,7 +79,13 @@ mod tests {
 
     #[test]
     fn centre_ray_looks_at_the_target_and_corners_span_the_fov() {
-        let cam = Camera::look_at(DVec3::new(0.0, 0.0, 5.0), DVec3::ZERO, DVec3::Y, 90.0, 2.0);
+        let cam = Camera::look_at(
+            DVec3::new(0.0, 0.0, 5.0),
+            DVec3::ZERO,
+            DVec3::Y,
+            90.0,
+            2.0,
+        );
         let centre = cam.ray(0.5, 0.5);
         assert!((centre.direction - DVec3::NEG_Z).length() < 1e-12);
         // 90° vertical fov: the top edge is 45° up; the aspect makes x twice y.

@@ -75,7 +75,10 @@ mod tests {
     fn empty_and_universe() {
         assert!(Interval::EMPTY.is_empty());
         assert!(!Interval::EMPTY.contains(0.0));
-        assert!(Interval::UNIVERSE.contains(-1e300) && Interval::UNIVERSE.contains(f64::INFINITY));
+        assert!(
+            Interval::UNIVERSE.contains(-1e300)
+                && Interval::UNIVERSE.contains(f64::INFINITY)
+        );
         assert!(!Interval::FORWARD.contains(-1e-300));
         assert_eq!(Interval::FORWARD.with_max(2.0), Interval::new(0.0, 2.0));
     }

@@ -30,7 +30,8 @@ mod tests {
 
     #[test]
     fn at_walks_along_the_direction() {
-        let ray = Ray::new(DVec3::new(1.0, 2.0, 3.0), DVec3::new(0.0, 0.0, -2.0));
+        let ray =
+            Ray::new(DVec3::new(1.0, 2.0, 3.0), DVec3::new(0.0, 0.0, -2.0));
         assert_eq!(ray.at(0.0), ray.origin);
         assert_eq!(ray.at(1.5), DVec3::new(1.0, 2.0, 0.0));
     }

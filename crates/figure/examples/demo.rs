@@ -7,11 +7,13 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use raystep_figure::{
-    Anchor, DVec2, DVec3, Figure, Format, Page, Projection, Stroke, palette, write_all,
+    Anchor, DVec2, DVec3, Figure, Format, Page, Projection, Stroke, palette,
+    write_all,
 };
 
 fn line_sign() -> Figure {
-    let mut page = Page::new(640.0, 420.0).view(DVec2::new(-3.0, -2.0), DVec2::new(4.0, 3.0));
+    let mut page = Page::new(640.0, 420.0)
+        .view(DVec2::new(-3.0, -2.0), DVec2::new(4.0, 3.0));
     let n = DVec2::new(1.0, 2.0).normalize();
     let p0 = DVec2::new(0.5, 0.5);
     let f = move |p: DVec2| n.dot(p - p0);
@@ -89,9 +91,15 @@ fn line_sign() -> Figure {
 }
 
 fn cube() -> Figure {
-    let proj = Projection::perspective(DVec3::new(3.0, 2.5, 4.0), DVec3::ZERO, DVec3::Y, 40.0);
+    let proj = Projection::perspective(
+        DVec3::new(3.0, 2.5, 4.0),
+        DVec3::ZERO,
+        DVec3::Y,
+        40.0,
+    );
     let t = proj.tan_half_fov();
-    let mut page = Page::new(360.0, 300.0).view(DVec2::new(-1.2 * t, -t), DVec2::new(1.2 * t, t));
+    let mut page = Page::new(360.0, 300.0)
+        .view(DVec2::new(-1.2 * t, -t), DVec2::new(1.2 * t, t));
     let corner = |i: u32| {
         DVec3::new(
             if i & 1 == 0 { -1.0 } else { 1.0 },
@@ -103,7 +111,11 @@ fn cube() -> Figure {
     for i in 0..8u32 {
         for bit in [1, 2, 4] {
             if i & bit == 0 {
-                page.segment(proj.project(corner(i)), proj.project(corner(i | bit)), &ink);
+                page.segment(
+                    proj.project(corner(i)),
+                    proj.project(corner(i | bit)),
+                    &ink,
+                );
             }
         }
     }

@@ -65,7 +65,9 @@ impl Chapter {
         for chart in self.charts {
             match chart() {
                 Ok(figure) => figures.push(figure),
-                Err(error) => eprintln!("warning: {} chart not drawn: {error}", self.id),
+                Err(error) => {
+                    eprintln!("warning: {} chart not drawn: {error}", self.id)
+                }
             }
         }
         figures
@@ -82,9 +84,13 @@ pub fn book_figures() -> PathBuf {
 
 /// The rows of the measured CSV file `file` of chapter `chapter`, as the
 /// repository keeps it; an error names the file and says how to make it.
-pub fn measured<R: CsvRow>(chapter: &str, file: &str) -> Result<Vec<R>, ChartError> {
+pub fn measured<R: CsvRow>(
+    chapter: &str,
+    file: &str,
+) -> Result<Vec<R>, ChartError> {
     let path = book_figures().join(chapter).join(file);
-    let text = std::fs::read_to_string(&path)
-        .map_err(|e| format!("{}: {e} (run `raystep measure` first)", path.display()))?;
+    let text = std::fs::read_to_string(&path).map_err(|e| {
+        format!("{}: {e} (run `raystep measure` first)", path.display())
+    })?;
     Ok(from_csv(&text).map_err(|e| format!("{}: {e}", path.display()))?)
 }

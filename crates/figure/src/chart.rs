@@ -25,7 +25,8 @@ pub fn chart(
 ) -> Result<Figure, ChartError> {
     let mut svg = String::new();
     {
-        let area = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
+        let area = SVGBackend::with_string(&mut svg, (width, height))
+            .into_drawing_area();
         area.fill(&WHITE).map_err(|e| e.to_string())?;
         draw(&area)?;
         area.present().map_err(|e| e.to_string())?;
@@ -55,7 +56,9 @@ mod tests {
                     .build_cartesian_2d(0f64..1f64, 0f64..1f64)?;
                 c.configure_mesh().draw()?;
                 c.draw_series(LineSeries::new(
-                    (0..=10).map(|i| (f64::from(i) / 10.0, (f64::from(i) / 10.0).powi(2))),
+                    (0..=10).map(|i| {
+                        (f64::from(i) / 10.0, (f64::from(i) / 10.0).powi(2))
+                    }),
                     &BLUE,
                 ))?;
                 Ok(())

@@ -15,7 +15,9 @@ struct Args {
 }
 
 /// Parses the arguments after the program name. `Ok(None)` means `--help`.
-fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Option<Args>, String> {
+fn parse_args(
+    args: impl IntoIterator<Item = String>,
+) -> Result<Option<Args>, String> {
     let mut out = None;
     let mut format = Format::Both;
     let mut check = false;
@@ -54,13 +56,17 @@ fn parse_args(args: impl IntoIterator<Item = String>) -> Result<Option<Args>, St
 /// extra, failing if there is any. On an error it prints one line to stderr and fails; bad
 /// arguments print a one-line usage error and exit with status 2.
 pub fn diagram_main(chapter: &Chapter) -> ExitCode {
-    let (program, chapter, figures) = (format!("{}-figures", chapter.id), chapter.id, chapter);
-    let usage = format!("usage: {program} --out DIR [--format svg|png|both] [--check]");
+    let (program, chapter, figures) =
+        (format!("{}-figures", chapter.id), chapter.id, chapter);
+    let usage =
+        format!("usage: {program} --out DIR [--format svg|png|both] [--check]");
     let args = match parse_args(std::env::args().skip(1)) {
         Ok(Some(args)) => args,
         Ok(None) => {
             println!("{usage}");
-            println!("Draws the {chapter} lecture figures into DIR as SVG and/or PNG files.");
+            println!(
+                "Draws the {chapter} lecture figures into DIR as SVG and/or PNG files."
+            );
             return ExitCode::SUCCESS;
         }
         Err(message) => {

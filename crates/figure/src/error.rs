@@ -33,7 +33,9 @@ pub enum FigureError {
         message: String,
     },
     /// A figure name that is not a plain file stem.
-    #[error("figure name {name:?} is not a plain file stem (use letters, digits, '-' and '_')")]
+    #[error(
+        "figure name {name:?} is not a plain file stem (use letters, digits, '-' and '_')"
+    )]
     BadName {
         /// The offending name.
         name: String,

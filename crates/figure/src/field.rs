@@ -74,7 +74,12 @@ impl Page {
     /// orange, each in four bands by |f| / `f_scale` (split at 0.25, 0.5 and 1), so the sign and
     /// size read at a glance. `f` is sampled at the centre of square cells of `cell_px` page px.
     /// The zero contour is not drawn: draw the line or curve on top.
-    pub fn scalar_field(&mut self, f: impl Fn(DVec2) -> f64, f_scale: f64, cell_px: f64) {
+    pub fn scalar_field(
+        &mut self,
+        f: impl Fn(DVec2) -> f64,
+        f_scale: f64,
+        cell_px: f64,
+    ) {
         if !(cell_px.is_finite() && cell_px >= 0.5) {
             return;
         }
@@ -83,10 +88,12 @@ impl Page {
         let mut y = 0.0;
         while y < h {
             let ch = cell_px.min(h - y);
-            let xs = (0..).map(|i| f64::from(i) * cell_px).take_while(|&x| x < w);
+            let xs =
+                (0..).map(|i| f64::from(i) * cell_px).take_while(|&x| x < w);
             let cells = xs.map(|x| {
                 let x1 = (x + cell_px).min(w);
-                let centre = self.to_world(DVec2::new((x + x1) / 2.0, y + ch / 2.0));
+                let centre =
+                    self.to_world(DVec2::new((x + x1) / 2.0, y + ch / 2.0));
                 (x, x1, field_color(f(centre), f_scale))
             });
             row_rects(&mut rects, y, ch, cells);
@@ -133,7 +140,8 @@ mod tests {
 
     #[test]
     fn constant_raster_merges_each_row_into_one_rect() {
-        let mut page = Page::new(200.0, 200.0).view(DVec2::ZERO, DVec2::splat(1.0));
+        let mut page =
+            Page::new(200.0, 200.0).view(DVec2::ZERO, DVec2::splat(1.0));
         page.raster(DVec2::ZERO, DVec2::splat(1.0), 16, 16, |_, _| {
             palette::SKY_BLUE
         });
@@ -143,7 +151,8 @@ mod tests {
 
     #[test]
     fn scalar_field_merges_runs() {
-        let mut page = Page::new(200.0, 100.0).view(DVec2::splat(-1.0), DVec2::splat(1.0));
+        let mut page =
+            Page::new(200.0, 100.0).view(DVec2::splat(-1.0), DVec2::splat(1.0));
         page.scalar_field(|p| p.y, 1.0, 4.0);
         let rects = page.to_svg_source().matches("<rect").count() - 1;
         assert_eq!(rects, 25); // one per row of cells: f depends on y only

@@ -36,7 +36,9 @@ impl Page {
         let almond: Vec<DVec2> = (0..=24)
             .map(|k| {
                 let a = f64::from(k) / 24.0 * std::f64::consts::TAU;
-                p + s * (1.3 * a.cos() * u + 0.6 * a.sin() * a.cos().abs().mul_add(-0.5, 1.0) * v)
+                p + s
+                    * (1.3 * a.cos() * u
+                        + 0.6 * a.sin() * a.cos().abs().mul_add(-0.5, 1.0) * v)
             })
             .collect();
         self.polygon(
@@ -57,7 +59,13 @@ impl Page {
     }
 
     /// The axis-aligned rectangle from `min` to `max`.
-    pub fn rect(&mut self, min: DVec2, max: DVec2, fill: Option<Color>, stroke: Option<&Stroke>) {
+    pub fn rect(
+        &mut self,
+        min: DVec2,
+        max: DVec2,
+        fill: Option<Color>,
+        stroke: Option<&Stroke>,
+    ) {
         self.polygon(
             &[min, DVec2::new(max.x, min.y), max, DVec2::new(min.x, max.y)],
             fill,

@@ -15,7 +15,8 @@ use crate::style::num;
 
 /// The PNG file of a `width × height` RGB 8-bit image, rows from the top.
 fn encode_png(width: u32, height: u32, rgb8: &[u8]) -> Vec<u8> {
-    let mut pixmap = tiny_skia::Pixmap::new(width, height).expect("a non-empty image size");
+    let mut pixmap =
+        tiny_skia::Pixmap::new(width, height).expect("a non-empty image size");
     for (out, rgb) in pixmap
         .data_mut()
         .chunks_exact_mut(4)
@@ -40,7 +41,14 @@ impl Page {
     ///
     /// # Panics
     /// If `rgb8` does not hold exactly `width · height · 3` bytes.
-    pub fn image(&mut self, min: DVec2, max: DVec2, width: u32, height: u32, rgb8: &[u8]) {
+    pub fn image(
+        &mut self,
+        min: DVec2,
+        max: DVec2,
+        width: u32,
+        height: u32,
+        rgb8: &[u8],
+    ) {
         let expected = u64::from(width) * u64::from(height) * 3;
         assert_eq!(
             rgb8.len() as u64,
@@ -61,7 +69,8 @@ impl Page {
             return;
         }
         // the PNG doubles the page: every image at least as large as its pixels is upscaled
-        let upscaled = size.x >= f64::from(width) / 2.0 && size.y >= f64::from(height) / 2.0;
+        let upscaled = size.x >= f64::from(width) / 2.0
+            && size.y >= f64::from(height) / 2.0;
         let rendering = if upscaled {
             r#" image-rendering="optimizeSpeed""#
         } else {

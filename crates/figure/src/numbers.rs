@@ -91,7 +91,8 @@ pub fn power_text(x: f64) -> String {
 
 /// A digit or minus sign raised: `−` → `⁻`, `4` → `⁴`; anything else as it is.
 pub fn superscript(c: char) -> char {
-    const SUPERSCRIPTS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    const SUPERSCRIPTS: [char; 10] =
+        ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
     match c {
         '−' | '-' => '⁻',
         _ => c.to_digit(10).map_or(c, |d| SUPERSCRIPTS[d as usize]),
@@ -150,6 +151,9 @@ mod tests {
         assert_eq!(power(2.5e3), "2.5·10^{3}");
         assert_eq!(power_text(1.1e-16), "1.1·10⁻¹⁶");
         assert_eq!(power_text(1e4), "10⁴");
-        assert_eq!(grouped(1_179_792_000), "1\u{2009}179\u{2009}792\u{2009}000");
+        assert_eq!(
+            grouped(1_179_792_000),
+            "1\u{2009}179\u{2009}792\u{2009}000"
+        );
     }
 }

@@ -115,9 +115,11 @@ fn usvg_options() -> usvg::Options<'static> {
 /// Renders a figure to SVG and PNG bytes.
 pub fn render(figure: &Figure) -> Result<Rendered, FigureError> {
     let source = figure.page.to_svg_source();
-    let tree = usvg::Tree::from_str(&source, &usvg_options()).map_err(|e| FigureError::Parse {
-        figure: figure.name.clone(),
-        message: e.to_string(),
+    let tree = usvg::Tree::from_str(&source, &usvg_options()).map_err(|e| {
+        FigureError::Parse {
+            figure: figure.name.clone(),
+            message: e.to_string(),
+        }
     })?;
 
     let write = usvg::WriteOptions {
@@ -131,10 +133,12 @@ pub fn render(figure: &Figure) -> Result<Rendered, FigureError> {
     let width = (tree.size().width() * PNG_SCALE).ceil() as u32;
     let height = (tree.size().height() * PNG_SCALE).ceil() as u32;
     let mut pixmap =
-        tiny_skia::Pixmap::new(width, height).ok_or_else(|| FigureError::Rasterise {
-            figure: figure.name.clone(),
-            width,
-            height,
+        tiny_skia::Pixmap::new(width, height).ok_or_else(|| {
+            FigureError::Rasterise {
+                figure: figure.name.clone(),
+                width,
+                height,
+            }
         })?;
     pixmap.fill(tiny_skia::Color::WHITE);
     resvg::render(
@@ -156,9 +160,9 @@ fn check_names(figures: &[Figure]) -> Result<(), FigureError> {
         let name = &figure.name;
         let plain = !name.is_empty()
             && !name.starts_with('.')
-            && name
-                .chars()
-                .all(|c| c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.'));
+            && name.chars().all(|c| {
+                c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.')
+            });
         if !plain {
             return Err(FigureError::BadName { name: name.clone() });
         }
@@ -176,7 +180,8 @@ fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), FigureError> {
         .file_name()
         .map(|n| n.to_string_lossy())
         .unwrap_or_default();
-    let tmp = path.with_file_name(format!(".{file_name}.{}.tmp", std::process::id()));
+    let tmp =
+        path.with_file_name(format!(".{file_name}.{}.tmp", std::process::id()));
     let result = (|| -> io::Result<()> {
         let mut file = fs::File::create(&tmp)?;
         file.write_all(bytes)?;

@@ -93,7 +93,10 @@ impl Page {
     /// If a side is not a positive finite number.
     pub fn new(width: f64, height: f64) -> Page {
         assert!(
-            width.is_finite() && height.is_finite() && width > 0.0 && height > 0.0,
+            width.is_finite()
+                && height.is_finite()
+                && width > 0.0
+                && height > 0.0,
             "page size must be positive, got {width} × {height}"
         );
         Page {
@@ -247,7 +250,13 @@ impl Page {
 
     /// A right-angle mark at `corner` between the unit directions `u` and `v`: a thin square
     /// corner `size` world units on a side.
-    pub fn right_angle(&mut self, corner: DVec2, u: DVec2, v: DVec2, size: f64) {
+    pub fn right_angle(
+        &mut self,
+        corner: DVec2,
+        u: DVec2,
+        v: DVec2,
+        size: f64,
+    ) {
         let mark = [
             corner + size * u,
             corner + size * (u + v),
@@ -260,7 +269,9 @@ impl Page {
     /// Draws nothing if the line misses the page or `dir` is zero.
     pub fn line(&mut self, p: DVec2, dir: DVec2, stroke: &Stroke) {
         let (min, max) = (self.world_min(), self.world_max());
-        if let Some((t0, t1)) = clip_line(p, dir, min, max, f64::NEG_INFINITY, f64::INFINITY) {
+        if let Some((t0, t1)) =
+            clip_line(p, dir, min, max, f64::NEG_INFINITY, f64::INFINITY)
+        {
             self.segment(p + t0 * dir, p + t1 * dir, stroke);
         }
     }
@@ -280,7 +291,8 @@ impl Page {
         let len = 5.0 + 2.5 * stroke.width;
         let half = 0.4 * len;
         let back = tip - u * len;
-        let head = [tip, back + n * half, tip - u * (0.8 * len), back - n * half];
+        let head =
+            [tip, back + n * half, tip - u * (0.8 * len), back - n * half];
         if (tip - from).length() > 0.7 * len {
             self.page_segment(from, tip - u * (0.7 * len), stroke);
         }
@@ -299,18 +311,32 @@ impl Page {
         let inset = DVec2::splat(EDGE_INSET / self.scale);
         let (min, max) = (self.world_min() + inset, self.world_max() - inset);
         // t0 > 0 would mean the origin itself is off the page
-        if let Some((0.0, t1)) = clip_line(origin, dir, min, max, 0.0, f64::INFINITY) {
+        if let Some((0.0, t1)) =
+            clip_line(origin, dir, min, max, 0.0, f64::INFINITY)
+        {
             self.arrow(origin, origin + t1 * dir, stroke);
         }
     }
 
     /// A circle of world radius `r` about `c`, optionally filled and/or stroked.
-    pub fn circle(&mut self, c: DVec2, r: f64, fill: Option<Color>, stroke: Option<&Stroke>) {
+    pub fn circle(
+        &mut self,
+        c: DVec2,
+        r: f64,
+        fill: Option<Color>,
+        stroke: Option<&Stroke>,
+    ) {
         self.circle_alpha(c, r, fill.map(Fill::from), stroke);
     }
 
     /// [`Page::circle`] with a possibly translucent fill, e.g. `Some(palette::ORANGE.with_alpha(0.3))`.
-    pub fn circle_alpha(&mut self, c: DVec2, r: f64, fill: Option<Fill>, stroke: Option<&Stroke>) {
+    pub fn circle_alpha(
+        &mut self,
+        c: DVec2,
+        r: f64,
+        fill: Option<Fill>,
+        stroke: Option<&Stroke>,
+    ) {
         let q = self.to_page(c);
         let rq = DVec2::splat(r * self.scale);
         let el = format!(
@@ -325,12 +351,22 @@ impl Page {
 
     /// The closed polygon through `pts`, optionally filled (opaque) and/or stroked.
     /// For a translucent fill use [`Page::polygon_alpha`].
-    pub fn polygon(&mut self, pts: &[DVec2], fill: Option<Color>, stroke: Option<&Stroke>) {
+    pub fn polygon(
+        &mut self,
+        pts: &[DVec2],
+        fill: Option<Color>,
+        stroke: Option<&Stroke>,
+    ) {
         self.polygon_alpha(pts, fill.map(Fill::from), stroke);
     }
 
     /// [`Page::polygon`] with a possibly translucent fill, e.g. `Some(palette::SKY_BLUE.with_alpha(0.3))`.
-    pub fn polygon_alpha(&mut self, pts: &[DVec2], fill: Option<Fill>, stroke: Option<&Stroke>) {
+    pub fn polygon_alpha(
+        &mut self,
+        pts: &[DVec2],
+        fill: Option<Fill>,
+        stroke: Option<&Stroke>,
+    ) {
         let q: Vec<DVec2> = pts.iter().map(|&p| self.to_page(p)).collect();
         let el = format!(
             r#"<polygon points="{}" {}/>"#,
@@ -353,7 +389,8 @@ impl Page {
         label: Option<&str>,
     ) {
         let a0 = from_dir.y.atan2(from_dir.x);
-        let sweep = (to_dir.y.atan2(to_dir.x) - a0).rem_euclid(std::f64::consts::TAU);
+        let sweep =
+            (to_dir.y.atan2(to_dir.x) - a0).rem_euclid(std::f64::consts::TAU);
         if from_dir == DVec2::ZERO || to_dir == DVec2::ZERO || sweep < 1e-9 {
             return;
         }
@@ -377,14 +414,22 @@ impl Page {
         if let Some(text) = label {
             let mid = dir(a0 + sweep / 2.0);
             let at = c + (radius_px + 2.0) * mid;
-            self.page_label(at, text, Anchor::toward(mid), LABEL_SIZE, palette::BLACK);
+            self.page_label(
+                at,
+                text,
+                Anchor::toward(mid),
+                LABEL_SIZE,
+                palette::BLACK,
+            );
         }
     }
 
     /// Thin grid lines at every multiple of `step` (world units) across the visible rectangle.
     pub fn grid(&mut self, step: f64, color: Color) {
         let (min, max) = (self.world_min(), self.world_max());
-        if !(step.is_finite() && step > 0.0) || (max - min).max_element() / step > 10_000.0 {
+        if !(step.is_finite() && step > 0.0)
+            || (max - min).max_element() / step > 10_000.0
+        {
             return;
         }
         let mut d = String::new();
@@ -459,12 +504,25 @@ impl Page {
     }
 
     /// Black text at page point `p_page` (y down), for titles and captions.
-    pub fn text_page(&mut self, p_page: DVec2, text: &str, anchor: Anchor, size_px: f64) {
+    pub fn text_page(
+        &mut self,
+        p_page: DVec2,
+        text: &str,
+        anchor: Anchor,
+        size_px: f64,
+    ) {
         self.page_label(p_page, text, anchor, size_px, palette::BLACK);
     }
 
     /// A label at a page point.
-    fn page_label(&mut self, q: DVec2, text: &str, anchor: Anchor, size: f64, color: Color) {
+    fn page_label(
+        &mut self,
+        q: DVec2,
+        text: &str,
+        anchor: Anchor,
+        size: f64,
+        color: Color,
+    ) {
         let (align, x, y) = label_position(q, anchor, size);
         let el = text_element(x, y, text, align, size, color);
         self.push(&[q], el);
@@ -531,7 +589,9 @@ pub fn clip_line(
         return None;
     }
     let (mut lo, mut hi) = (t_min, t_max);
-    for (p, d, min, max) in [(p.x, dir.x, min.x, max.x), (p.y, dir.y, min.y, max.y)] {
+    for (p, d, min, max) in
+        [(p.x, dir.x, min.x, max.x), (p.y, dir.y, min.y, max.y)]
+    {
         if d == 0.0 {
             if p < min || p > max {
                 return None;
@@ -555,7 +615,8 @@ mod tests {
 
     #[test]
     fn view_maps_window_centred_with_margin() {
-        let page = Page::new(400.0, 200.0).view(DVec2::new(-1.0, -1.0), DVec2::new(1.0, 1.0));
+        let page = Page::new(400.0, 200.0)
+            .view(DVec2::new(-1.0, -1.0), DVec2::new(1.0, 1.0));
         assert!((page.scale() - 76.0).abs() < 1e-12); // (200 - 2·24) / 2
         assert!(close(page.to_page(DVec2::ZERO), DVec2::new(200.0, 100.0)));
         assert!(close(
@@ -576,20 +637,26 @@ mod tests {
     fn clipped_line_ends_on_the_border() {
         let (min, max) = (DVec2::new(-2.0, -1.0), DVec2::new(2.0, 1.0));
         let (p, d) = (DVec2::new(0.5, 0.0), DVec2::new(1.0, 1.0));
-        let (t0, t1) = clip_line(p, d, min, max, f64::NEG_INFINITY, f64::INFINITY).unwrap();
+        let (t0, t1) =
+            clip_line(p, d, min, max, f64::NEG_INFINITY, f64::INFINITY)
+                .unwrap();
         assert!(close(p + t0 * d, DVec2::new(-0.5, -1.0)));
         assert!(close(p + t1 * d, DVec2::new(1.5, 1.0)));
         // a ray only goes forward
         let (t0, _) = clip_line(p, d, min, max, 0.0, f64::INFINITY).unwrap();
         assert_eq!(t0, 0.0);
         // misses
-        assert!(clip_line(DVec2::new(0.0, 5.0), DVec2::X, min, max, -1e9, 1e9).is_none());
+        assert!(
+            clip_line(DVec2::new(0.0, 5.0), DVec2::X, min, max, -1e9, 1e9)
+                .is_none()
+        );
         assert!(clip_line(p, DVec2::ZERO, min, max, -1e9, 1e9).is_none());
     }
 
     #[test]
     fn line_through_the_view_reaches_the_page_border() {
-        let mut page = Page::new(300.0, 200.0).view(DVec2::splat(-1.0), DVec2::splat(1.0));
+        let mut page =
+            Page::new(300.0, 200.0).view(DVec2::splat(-1.0), DVec2::splat(1.0));
         page.line(
             DVec2::ZERO,
             DVec2::new(1.0, 0.3),

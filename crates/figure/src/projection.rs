@@ -34,7 +34,12 @@ impl Projection {
     ///
     /// # Panics
     /// If `eye == target` or `up` is parallel to the view direction.
-    pub fn perspective(eye: DVec3, target: DVec3, up: DVec3, fov_y_degrees: f64) -> Projection {
+    pub fn perspective(
+        eye: DVec3,
+        target: DVec3,
+        up: DVec3,
+        fov_y_degrees: f64,
+    ) -> Projection {
         let forward = (target - eye).normalize();
         let right = forward.cross(up).normalize();
         assert!(
@@ -103,7 +108,12 @@ mod tests {
 
     #[test]
     fn perspective_centres_the_target_and_keeps_up_up() {
-        let p = Projection::perspective(DVec3::new(0.0, 0.0, 5.0), DVec3::ZERO, DVec3::Y, 60.0);
+        let p = Projection::perspective(
+            DVec3::new(0.0, 0.0, 5.0),
+            DVec3::ZERO,
+            DVec3::Y,
+            60.0,
+        );
         assert!(p.project(DVec3::ZERO).length() < 1e-12);
         let q = p.project(DVec3::new(1.0, 2.0, 0.0));
         assert!((q - DVec2::new(0.2, 0.4)).length() < 1e-12, "{q}");

@@ -53,7 +53,12 @@ impl SideView {
 /// coordinates from the top-left corner (x right, y down), to place labels
 /// on a render. (Chapter 07 derives the same projection step by step for
 /// its rasterizer.)
-pub fn camera_pixel(camera: &raystep_core::Camera, p: DVec3, width: u32, height: u32) -> DVec2 {
+pub fn camera_pixel(
+    camera: &raystep_core::Camera,
+    p: DVec3,
+    width: u32,
+    height: u32,
+) -> DVec2 {
     let d = p - camera.eye;
     let z = d.dot(camera.forward);
     let x = d.dot(camera.right) / z / (camera.half_height * camera.aspect);
@@ -70,7 +75,10 @@ mod tests {
 
     #[test]
     fn side_view_round_trips_points_in_its_plane() {
-        let view = SideView::new(DVec3::new(1.0, 2.0, 3.0), DVec3::new(3.0, -5.0, 4.0));
+        let view = SideView::new(
+            DVec3::new(1.0, 2.0, 3.0),
+            DVec3::new(3.0, -5.0, 4.0),
+        );
         let p = view.point(DVec2::new(2.5, -1.0));
         assert!((view.at(p) - DVec2::new(2.5, -1.0)).length() < 1e-12);
         assert!(view.off(p).abs() < 1e-12);

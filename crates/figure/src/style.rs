@@ -30,7 +30,9 @@ impl Color {
     /// The colour a fraction `t` (0–1) of the way from `self` to `other`.
     pub fn mix(self, other: Color, t: f64) -> Color {
         let t = t.clamp(0.0, 1.0);
-        let lerp = |a: u8, b: u8| (f64::from(a) + (f64::from(b) - f64::from(a)) * t).round() as u8;
+        let lerp = |a: u8, b: u8| {
+            (f64::from(a) + (f64::from(b) - f64::from(a)) * t).round() as u8
+        };
         Color::rgb(
             lerp(self.r, other.r),
             lerp(self.g, other.g),
@@ -194,14 +196,19 @@ impl Stroke {
                     num(off)
                 ));
             }
-            None => s.push_str(r#" stroke-linecap="round" stroke-linejoin="round""#),
+            None => {
+                s.push_str(r#" stroke-linecap="round" stroke-linejoin="round""#)
+            }
         }
         s
     }
 }
 
 /// SVG attributes for an optional fill and an optional stroke.
-pub(crate) fn paint_attributes(fill: Option<Fill>, stroke: Option<&Stroke>) -> String {
+pub(crate) fn paint_attributes(
+    fill: Option<Fill>,
+    stroke: Option<&Stroke>,
+) -> String {
     let mut s = match fill {
         Some(f) if f.opacity < 1.0 => {
             format!(

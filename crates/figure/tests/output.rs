@@ -4,12 +4,13 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use raystep_figure::{
-    Anchor, DVec2, Figure, FigureError, Format, Mismatch, Page, Stroke, check_all, palette, render,
-    write_all,
+    Anchor, DVec2, Figure, FigureError, Format, Mismatch, Page, Stroke,
+    check_all, palette, render, write_all,
 };
 
 fn sample(name: &str) -> Figure {
-    let mut page = Page::new(240.0, 160.0).view(DVec2::new(-2.0, -1.0), DVec2::new(2.0, 1.5));
+    let mut page = Page::new(240.0, 160.0)
+        .view(DVec2::new(-2.0, -1.0), DVec2::new(2.0, 1.5));
     page.scalar_field(|p| p.y - 0.5 * p.x, 1.0, 8.0);
     page.axes(palette::GREY);
     page.line(
@@ -24,7 +25,8 @@ fn sample(name: &str) -> Figure {
 
 /// A fresh empty directory under the system temp dir.
 fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("raystep-figure-{test}-{}", std::process::id()));
+    let dir = std::env::temp_dir()
+        .join(format!("raystep-figure-{test}-{}", std::process::id()));
     let _ = fs::remove_dir_all(&dir);
     fs::create_dir_all(&dir).unwrap();
     dir
@@ -60,7 +62,8 @@ fn render_is_deterministic_with_text_outlined() {
 #[test]
 fn write_all_writes_both_files_and_no_temporaries() {
     let dir = scratch("write").join("nested");
-    let written = write_all(&[sample("one"), sample("two")], &dir, Format::Both).unwrap();
+    let written =
+        write_all(&[sample("one"), sample("two")], &dir, Format::Both).unwrap();
     assert_eq!(
         written,
         ["one.svg", "one.png", "two.svg", "two.png"].map(|n| dir.join(n))
@@ -115,7 +118,10 @@ fn unwritable_directory_is_an_error_naming_the_path() {
     assert!(matches!(err, FigureError::CreateDir { .. }), "{err:?}");
     let message = err.to_string();
     assert!(
-        message.starts_with(&format!("cannot create directory {}: ", target.display())),
+        message.starts_with(&format!(
+            "cannot create directory {}: ",
+            target.display()
+        )),
         "{message}"
     );
 }
@@ -125,6 +131,7 @@ fn bad_and_duplicate_names_are_errors() {
     let dir = scratch("names");
     let err = write_all(&[sample("../up")], &dir, Format::Svg).unwrap_err();
     assert!(err.to_string().contains("../up"), "{err}");
-    let err = write_all(&[sample("x"), sample("x")], &dir, Format::Svg).unwrap_err();
+    let err =
+        write_all(&[sample("x"), sample("x")], &dir, Format::Svg).unwrap_err();
     assert_eq!(err.to_string(), "two figures are named x");
 }

@@ -15,7 +15,10 @@ pub const CHAPTERS: &[&Chapter] = &[
 ];
 
 /// The chapter the user named (`1`, `01`, `ch01`, …), among `chapters`.
-pub fn find<'a>(arg: &str, chapters: &[&'a Chapter]) -> Result<&'a Chapter, crate::Error> {
+pub fn find<'a>(
+    arg: &str,
+    chapters: &[&'a Chapter],
+) -> Result<&'a Chapter, crate::Error> {
     crate::workspace::resolve(arg, chapters, |c| c.id).copied()
 }
 
@@ -32,18 +35,23 @@ mod tests {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
         let folders = crate::workspace::chapters(&root).unwrap();
         let ids: Vec<&str> = CHAPTERS.iter().map(|c| c.id).collect();
-        let folder_ids: Vec<&str> = folders.iter().map(|c| c.id.as_str()).collect();
+        let folder_ids: Vec<&str> =
+            folders.iter().map(|c| c.id.as_str()).collect();
         assert_eq!(ids, folder_ids);
         for (chapter, folder) in CHAPTERS.iter().zip(&folders) {
             assert_eq!(chapter.package, folder.package);
-            let mut listed: Vec<String> = chapter.exercises.iter().map(|e| e.to_string()).collect();
+            let mut listed: Vec<String> =
+                chapter.exercises.iter().map(|e| e.to_string()).collect();
             listed.sort();
             assert_eq!(listed, folder.exercises().unwrap(), "{}", chapter.id);
-            let lib = std::fs::read_to_string(folder.dir.join("src/lib.rs")).unwrap();
+            let lib =
+                std::fs::read_to_string(folder.dir.join("src/lib.rs")).unwrap();
             let declared: Vec<usize> = chapter
                 .exercises
                 .iter()
-                .map(|e| lib.find(&format!("exercise/{e}.rs")).expect("declared"))
+                .map(|e| {
+                    lib.find(&format!("exercise/{e}.rs")).expect("declared")
+                })
                 .collect();
             assert!(declared.is_sorted(), "{}: lecture order", chapter.id);
         }

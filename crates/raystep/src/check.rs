@@ -64,9 +64,11 @@ const LIST_LIMIT: Duration = Duration::from_secs(10);
 /// Runs `raystep check`.
 pub fn run(options: &Options) -> Result<ExitCode, Error> {
     let root = workspace::root();
-    let chapter = crate::chapters::find(&options.chapter, crate::chapters::CHAPTERS)?;
+    let chapter =
+        crate::chapters::find(&options.chapter, crate::chapters::CHAPTERS)?;
     let dir = root.join("chapters").join(chapter.package);
-    let exercises: Vec<String> = chapter.exercises.iter().map(|e| e.to_string()).collect();
+    let exercises: Vec<String> =
+        chapter.exercises.iter().map(|e| e.to_string()).collect();
     let sources: HashMap<String, String> = exercises
         .iter()
         .filter_map(|e| {
@@ -278,7 +280,9 @@ pub fn test_executables(messages: &str) -> Vec<Executable> {
         else {
             continue;
         };
-        if artifact.reason != "compiler-artifact" || !artifact.profile.is_some_and(|p| p.test) {
+        if artifact.reason != "compiler-artifact"
+            || !artifact.profile.is_some_and(|p| p.test)
+        {
             continue;
         }
         let kinds: Vec<&str> = target.kind.iter().map(String::as_str).collect();
@@ -342,7 +346,9 @@ pub enum CargoFailure {
 impl fmt::Display for CargoFailure {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            CargoFailure::DoesNotCompile(error) => write!(f, "the tests do not compile: {error}"),
+            CargoFailure::DoesNotCompile(error) => {
+                write!(f, "the tests do not compile: {error}")
+            }
             CargoFailure::Cargo(error) => write!(f, "cargo failed: {error}"),
         }
     }
@@ -359,9 +365,13 @@ pub fn cargo_failure(stderr: &str) -> CargoFailure {
     match first_error {
         Some(i) if compile_failed => {
             let mut error = lines[i].to_string();
-            if let Some(at) = lines.get(i + 1).and_then(|l| l.trim().strip_prefix("--> ")) {
+            if let Some(at) =
+                lines.get(i + 1).and_then(|l| l.trim().strip_prefix("--> "))
+            {
                 error.push_str(&format!(" (at {})", at.replace("src/../", "")));
-            } else if let Some(why) = lines[i..].iter().find_map(|l| exit_reason(l)) {
+            } else if let Some(why) =
+                lines[i..].iter().find_map(|l| exit_reason(l))
+            {
                 // No diagnostic: the compiler itself was killed (out of memory,
                 // a full disk). Cargo says how under "Caused by".
                 error.push_str(&format!("; the compiler stopped ({why})"));
@@ -408,7 +418,11 @@ fn test_threads() -> usize {
 /// folder, with the variables cargo sets that a test may read, and nothing
 /// from the user's environment that changes what libtest or insta print or
 /// that makes a failing test pass.
-fn test_command(executable: &Executable, cargo: &str, args: &[&str]) -> Command {
+fn test_command(
+    executable: &Executable,
+    cargo: &str,
+    args: &[&str],
+) -> Command {
     let mut command = Command::new(&executable.path);
     command
         .args(args)
@@ -437,7 +451,12 @@ fn test_command(executable: &Executable, cargo: &str, args: &[&str]) -> Command 
 }
 
 /// Runs one test binary with a time limit and reads what it printed.
-fn run_tests(executable: &Executable, cargo: &str, limit: Duration, threads: usize) -> TestBinary {
+fn run_tests(
+    executable: &Executable,
+    cargo: &str,
+    limit: Duration,
+    threads: usize,
+) -> TestBinary {
     let threads_arg = threads.to_string();
     let args = [
         "--test-threads",
@@ -447,7 +466,8 @@ fn run_tests(executable: &Executable, cargo: &str, limit: Duration, threads: usi
         "--format",
         "pretty",
     ];
-    let ran = run_with_limit(&mut test_command(executable, cargo, &args), limit);
+    let ran =
+        run_with_limit(&mut test_command(executable, cargo, &args), limit);
     let (stdout, ended) = match ran {
         Err(error) => (String::new(), Ended::NotStarted(error.to_string())),
         Ok(Ran {
@@ -465,8 +485,13 @@ fn run_tests(executable: &Executable, cargo: &str, limit: Duration, threads: usi
             exit: Exit::TimedOut,
         }) => {
             // Which tests there are, in the order libtest starts them.
-            let mut list = test_command(executable, cargo, &["--list", "--format", "terse"]);
-            let listed = match run_with_limit(&mut list, LIST_LIMIT.min(limit)) {
+            let mut list = test_command(
+                executable,
+                cargo,
+                &["--list", "--format", "terse"],
+            );
+            let listed = match run_with_limit(&mut list, LIST_LIMIT.min(limit))
+            {
                 Ok(Ran {
                     stdout,
                     exit: Exit::Status(status),
@@ -540,8 +565,10 @@ fn run_with_limit(command: &mut Command, limit: Duration) -> io::Result<Ran> {
     // after a kill. A process the binary started that outlives it (in
     // another process group) could hold it open: do not wait for that.
     let _ = finished_reading.recv_timeout(Duration::from_secs(2));
-    let stdout =
-        String::from_utf8_lossy(&captured.lock().unwrap_or_else(|e| e.into_inner())).into_owned();
+    let stdout = String::from_utf8_lossy(
+        &captured.lock().unwrap_or_else(|e| e.into_inner()),
+    )
+    .into_owned();
     Ok(Ran { stdout, exit })
 }
 
@@ -832,9 +859,9 @@ pub fn parse_list(stdout: &str) -> Vec<String> {
 /// an insta snapshot, also the first differing lines of its diff, and for
 /// `assert_eq!`, the two values when they are short.
 fn failure_message(text: &[&str]) -> Option<String> {
-    let panic = text
-        .iter()
-        .position(|l| l.starts_with("thread '") && l.contains(" panicked at "))?;
+    let panic = text.iter().position(|l| {
+        l.starts_with("thread '") && l.contains(" panicked at ")
+    })?;
     let mut message = text.get(panic + 1)?.trim().to_string();
     if let Some(diff) = snapshot_difference(&text[..panic]) {
         message.push_str(&format!(" ({diff})"));
@@ -844,7 +871,9 @@ fn failure_message(text: &[&str]) -> Option<String> {
             let line = text.get(panic + i)?.trim_start().strip_prefix(label)?;
             (line.len() <= 80).then(|| line.trim().to_string())
         };
-        if let (Some(left), Some(right)) = (value(2, "left:"), value(3, "right:")) {
+        if let (Some(left), Some(right)) =
+            (value(2, "left:"), value(3, "right:"))
+        {
             message.push_str(&format!(" (left: {left}, right: {right})"));
         }
     }
@@ -861,7 +890,8 @@ fn snapshot_difference(text: &[&str]) -> Option<String> {
     let changed = |sign: &str| {
         text.iter().find_map(|l| {
             let (numbers, rest) = l.split_once(&format!("│{sign}"))?;
-            let number = numbers.split_whitespace().next().unwrap_or("?").to_string();
+            let number =
+                numbers.split_whitespace().next().unwrap_or("?").to_string();
             Some((
                 number,
                 rest.split_whitespace().collect::<Vec<_>>().join(" "),
@@ -872,8 +902,12 @@ fn snapshot_difference(text: &[&str]) -> Option<String> {
         (Some((line, old)), Some((_, new))) => Some(format!(
             "snapshot line {line}: expected `{old}`, got `{new}`"
         )),
-        (Some((line, old)), None) => Some(format!("snapshot line {line}: missing `{old}`")),
-        (None, Some((line, new))) => Some(format!("new line {line}: unexpected `{new}`")),
+        (Some((line, old)), None) => {
+            Some(format!("snapshot line {line}: missing `{old}`"))
+        }
+        (None, Some((line, new))) => {
+            Some(format!("new line {line}: unexpected `{new}`"))
+        }
         (None, None) => None,
     }
 }
@@ -955,7 +989,9 @@ pub fn test_binary(target: Target, stdout: &str, ended: &Ended) -> TestBinary {
         Ended::Exited { success: true, .. } => {
             (Some("the test binary stopped early".to_string()), None)
         }
-        Ended::Exited { how, .. } => (Some(format!("the test binary crashed ({how})")), None),
+        Ended::Exited { how, .. } => {
+            (Some(format!("the test binary crashed ({how})")), None)
+        }
         Ended::NotStarted(why) => (
             Some(format!("the test binary could not be started ({why})")),
             None,
@@ -977,8 +1013,13 @@ pub fn test_binary(target: Target, stdout: &str, ended: &Ended) -> TestBinary {
 /// have started, and those among them that did not report are the ones
 /// running. If a test that reported is not among them the order was another
 /// (shuffled): only the tests libtest itself called slow are named then.
-fn still_running(output: &Output, listed: &[String], threads: usize) -> Vec<String> {
-    let reported: HashSet<&str> = output.results.iter().map(|r| r.name.as_str()).collect();
+fn still_running(
+    output: &Output,
+    listed: &[String],
+    threads: usize,
+) -> Vec<String> {
+    let reported: HashSet<&str> =
+        output.results.iter().map(|r| r.name.as_str()).collect();
     let done = listed
         .iter()
         .filter(|name| reported.contains(name.as_str()))
@@ -1043,7 +1084,8 @@ pub struct Report {
 impl Report {
     /// Every exercise passed and no other test failed.
     pub fn all_passed(&self) -> bool {
-        self.other_failed.is_empty() && self.exercises.iter().all(|(_, v)| *v == Verdict::Passed)
+        self.other_failed.is_empty()
+            && self.exercises.iter().all(|(_, v)| *v == Verdict::Passed)
     }
 }
 
@@ -1091,8 +1133,7 @@ pub fn report(
     binaries: &[TestBinary],
     sources: &HashMap<String, String>,
 ) -> Report {
-    let is_exercise =
-        |b: &TestBinary| matches!(&b.target, Target::Test(stem) if exercises.contains(stem));
+    let is_exercise = |b: &TestBinary| matches!(&b.target, Target::Test(stem) if exercises.contains(stem));
     let exercises = exercises
         .iter()
         .map(|exercise| {
@@ -1100,7 +1141,11 @@ pub fn report(
                 .iter()
                 .filter(|b| b.target == Target::Test(exercise.clone()))
                 .collect();
-            let verdict = verdict(exercise, &own, sources.get(exercise).map(String::as_str));
+            let verdict = verdict(
+                exercise,
+                &own,
+                sources.get(exercise).map(String::as_str),
+            );
             (exercise.clone(), verdict)
         })
         .collect();
@@ -1111,7 +1156,9 @@ pub fn report(
             match &result.outcome {
                 Outcome::Passed => other_passed += 1,
                 Outcome::Ignored => {}
-                Outcome::Failed(why) => other_failed.push(describe(&result.name, why.as_deref())),
+                Outcome::Failed(why) => {
+                    other_failed.push(describe(&result.name, why.as_deref()))
+                }
             }
         }
         if let Some(crash) = &binary.crashed {
@@ -1129,12 +1176,19 @@ pub fn report(
 }
 
 /// One exercise's verdict from its binaries' results.
-fn verdict(exercise: &str, binaries: &[&TestBinary], source: Option<&str>) -> Verdict {
+fn verdict(
+    exercise: &str,
+    binaries: &[&TestBinary],
+    source: Option<&str>,
+) -> Verdict {
     if binaries.is_empty() {
-        return Verdict::Failed(format!("no tests ran (expected tests/{exercise}.rs)"));
+        return Verdict::Failed(format!(
+            "no tests ran (expected tests/{exercise}.rs)"
+        ));
     }
     // Killed before it could finish: what did report says too little.
-    if let Some(timed_out) = binaries.iter().find_map(|b| b.timed_out.as_ref()) {
+    if let Some(timed_out) = binaries.iter().find_map(|b| b.timed_out.as_ref())
+    {
         return Verdict::TimedOut(timed_out.clone());
     }
     let position = |name: &str| {
@@ -1188,7 +1242,9 @@ mod tests {
                 rest.strip_suffix(" tests")
                     .or_else(|| rest.strip_suffix(" test"))
             })
-            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
+            .is_some_and(|n| {
+                !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit())
+            })
     }
 
     /// The fixtures hold what several test binaries printed one after the
@@ -1240,9 +1296,11 @@ mod tests {
 
     #[test]
     fn test_executables_are_read_from_cargos_messages() {
-        let executables = test_executables(include_str!("../testdata/artifacts.jsonl"));
-        let manifest =
-            PathBuf::from("/work/check-wt/chapters/ch01-implicit-lines-planes/Cargo.toml");
+        let executables =
+            test_executables(include_str!("../testdata/artifacts.jsonl"));
+        let manifest = PathBuf::from(
+            "/work/check-wt/chapters/ch01-implicit-lines-planes/Cargo.toml",
+        );
         let deps = Path::new("/work/main/target/debug/deps");
         assert_eq!(
             executables,
@@ -1304,9 +1362,11 @@ mod tests {
                 .iter()
                 .all(|b| b.crashed.is_none() && b.timed_out.is_none())
         );
-        let counts: Vec<usize> = binaries.iter().map(|b| b.results.len()).collect();
+        let counts: Vec<usize> =
+            binaries.iter().map(|b| b.results.len()).collect();
         assert_eq!(counts, [1, 2, 1, 3]);
-        let output = parse_output(&split(include_str!("../testdata/student.stdout"))[1]);
+        let output =
+            parse_output(&split(include_str!("../testdata/student.stdout"))[1]);
         assert!(output.finished);
         assert!(output.slow.is_empty());
     }
@@ -1345,9 +1405,11 @@ mod tests {
     fn student_verdicts() {
         let sources = HashMap::from([(
             "triple".to_string(),
-            "#[test]\nfn triple_snapshot() {}\n#[test]\nfn triple_eq() {}\n".to_string(),
+            "#[test]\nfn triple_snapshot() {}\n#[test]\nfn triple_eq() {}\n"
+                .to_string(),
         )]);
-        let report = report(&exercises(&["add", "triple"]), &student(), &sources);
+        let report =
+            report(&exercises(&["add", "triple"]), &student(), &sources);
         assert_eq!(
             report.exercises,
             [
@@ -1377,7 +1439,8 @@ mod tests {
 
     #[test]
     fn without_sources_the_first_failure_is_alphabetical() {
-        let report = report(&exercises(&["triple"]), &student(), &HashMap::new());
+        let report =
+            report(&exercises(&["triple"]), &student(), &HashMap::new());
         assert_eq!(
             report.exercises[0].1,
             Verdict::Failed(
@@ -1393,7 +1456,8 @@ mod tests {
             sample_targets(),
             include_str!("../testdata/reference.stdout"),
         );
-        let report = report(&exercises(&["add", "triple"]), &binaries, &HashMap::new());
+        let report =
+            report(&exercises(&["add", "triple"]), &binaries, &HashMap::new());
         assert_eq!(
             report.exercises,
             [
@@ -1407,7 +1471,8 @@ mod tests {
 
     #[test]
     fn an_exercise_without_tests_fails() {
-        let report = report(&exercises(&["missing"]), &student(), &HashMap::new());
+        let report =
+            report(&exercises(&["missing"]), &student(), &HashMap::new());
         assert_eq!(
             report.exercises[0].1,
             Verdict::Failed("no tests ran (expected tests/missing.rs)".into())
@@ -1416,7 +1481,8 @@ mod tests {
 
     #[test]
     fn compile_errors_are_reported_with_their_location() {
-        let failure = cargo_failure(include_str!("../testdata/compile-error.stderr"));
+        let failure =
+            cargo_failure(include_str!("../testdata/compile-error.stderr"));
         assert_eq!(
             failure.to_string(),
             "the tests do not compile: error[E0308]: mismatched types (at exercise/ex.rs:3:26)"
@@ -1425,7 +1491,8 @@ mod tests {
 
     #[test]
     fn a_killed_compiler_is_reported_with_how_it_stopped() {
-        let failure = cargo_failure(include_str!("../testdata/compiler-killed.stderr"));
+        let failure =
+            cargo_failure(include_str!("../testdata/compiler-killed.stderr"));
         assert_eq!(
             failure.to_string(),
             "the tests do not compile: error: could not compile `ch07-two-methods` (test \"render\"); \
@@ -1459,7 +1526,9 @@ mod tests {
         ];
         assert_eq!(
             binaries[0].crashed.as_deref(),
-            Some("the test binary crashed (signal: 6, SIGABRT: process abort signal)")
+            Some(
+                "the test binary crashed (signal: 6, SIGABRT: process abort signal)"
+            )
         );
         assert_eq!(binaries[1].crashed, None);
         let report = report(&exercises(&["crash"]), &binaries, &HashMap::new());
@@ -1484,11 +1553,15 @@ mod tests {
             binary.crashed.as_deref(),
             Some("the test binary stopped early")
         );
-        let missing = Ended::NotStarted("No such file or directory (os error 2)".to_string());
+        let missing = Ended::NotStarted(
+            "No such file or directory (os error 2)".to_string(),
+        );
         let binary = test_binary(Target::Test("gone".into()), "", &missing);
         assert_eq!(
             binary.crashed.as_deref(),
-            Some("the test binary could not be started (No such file or directory (os error 2))")
+            Some(
+                "the test binary could not be started (No such file or directory (os error 2))"
+            )
         );
     }
 
@@ -1514,7 +1587,11 @@ mod tests {
         };
         let binaries = [
             test_binary(Target::Unit("src/lib.rs".into()), lib, &failed),
-            test_binary(Target::Unit("src/bin/figures.rs".into()), bin, &failed),
+            test_binary(
+                Target::Unit("src/bin/figures.rs".into()),
+                bin,
+                &failed,
+            ),
         ];
         let report = report(&[], &binaries, &HashMap::new());
         assert_eq!(report.other_passed, 2);
@@ -1567,7 +1644,8 @@ mod tests {
             ),
         ];
         assert_eq!(binaries[1].crashed, None);
-        let report = report(&exercises(&["recursion"]), &binaries, &HashMap::new());
+        let report =
+            report(&exercises(&["recursion"]), &binaries, &HashMap::new());
         assert_eq!(
             report.exercises[0].1,
             Verdict::TimedOut(TimedOut {
@@ -1612,8 +1690,14 @@ mod tests {
         // No list: nothing to say.
         assert!(running(&timed_out(1, Vec::new())).is_empty());
         // Unless libtest itself said which test was slow.
-        let warned = format!("{KILLED}test weights_shrink has been running for over 60 seconds\n");
-        let binary = test_binary(Target::Test("r".into()), &warned, &timed_out(1, Vec::new()));
+        let warned = format!(
+            "{KILLED}test weights_shrink has been running for over 60 seconds\n"
+        );
+        let binary = test_binary(
+            Target::Test("r".into()),
+            &warned,
+            &timed_out(1, Vec::new()),
+        );
         assert_eq!(
             binary.timed_out.unwrap().to_string(),
             "timed out after 60 s (still running: weights_shrink)"
@@ -1635,7 +1719,9 @@ mod tests {
         let report = report(&[], &binaries, &HashMap::new());
         assert_eq!(
             report.other_failed,
-            ["unittests src/lib.rs: timed out after 2.5 s (still running: tests::spins)"]
+            [
+                "unittests src/lib.rs: timed out after 2.5 s (still running: tests::spins)"
+            ]
         );
         assert!(!report.all_passed());
         // Without a list or a warning the message names no test.
@@ -1645,7 +1731,10 @@ mod tests {
             threads: 4,
         };
         let binary = test_binary(Target::Test("x".into()), "", &unknown);
-        assert_eq!(binary.timed_out.unwrap().to_string(), "timed out after 3 s");
+        assert_eq!(
+            binary.timed_out.unwrap().to_string(),
+            "timed out after 3 s"
+        );
     }
 
     #[test]
@@ -1673,8 +1762,11 @@ mod tests {
     #[cfg(unix)]
     #[test]
     fn a_process_past_its_limit_is_killed() {
-        let ran =
-            run_with_limit(Command::new("sleep").arg("30"), Duration::from_millis(300)).unwrap();
+        let ran = run_with_limit(
+            Command::new("sleep").arg("30"),
+            Duration::from_millis(300),
+        )
+        .unwrap();
         assert!(matches!(ran.exit, Exit::TimedOut), "{ran:?}");
     }
 
@@ -1692,10 +1784,13 @@ mod tests {
         // Dead (or a zombie nobody has reaped yet); SIGKILL is delivered at once,
         // give the kernel a moment all the same.
         let dead = || {
-            std::fs::read_to_string(format!("/proc/{sleep}/stat")).map_or(true, |stat| {
-                stat.rsplit_once(") ")
-                    .is_some_and(|(_, s)| s.starts_with('Z'))
-            })
+            std::fs::read_to_string(format!("/proc/{sleep}/stat")).map_or(
+                true,
+                |stat| {
+                    stat.rsplit_once(") ")
+                        .is_some_and(|(_, s)| s.starts_with('Z'))
+                },
+            )
         };
         let until = Instant::now() + Duration::from_secs(5);
         while !dead() && Instant::now() < until {
@@ -1707,14 +1802,21 @@ mod tests {
     #[cfg(unix)]
     #[test]
     fn how_a_process_ended_is_said_as_cargo_says_it() {
-        let ran =
-            run_with_limit(&mut shell("echo partial; exit 3"), Duration::from_secs(30)).unwrap();
+        let ran = run_with_limit(
+            &mut shell("echo partial; exit 3"),
+            Duration::from_secs(30),
+        )
+        .unwrap();
         assert_eq!(ran.stdout, "partial\n");
         let Exit::Status(status) = ran.exit else {
             panic!("{ran:?}")
         };
         assert_eq!(describe_status(status), "exit status: 3");
-        let ran = run_with_limit(&mut shell("kill -ABRT $$"), Duration::from_secs(30)).unwrap();
+        let ran = run_with_limit(
+            &mut shell("kill -ABRT $$"),
+            Duration::from_secs(30),
+        )
+        .unwrap();
         let Exit::Status(status) = ran.exit else {
             panic!("{ran:?}")
         };

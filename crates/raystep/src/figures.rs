@@ -44,12 +44,20 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
 }
 
 /// Writes every figure and lists the files.
-fn write(chapters: &[&Chapter], out: &Path, format: Format) -> Result<ExitCode, Error> {
+fn write(
+    chapters: &[&Chapter],
+    out: &Path,
+    format: Format,
+) -> Result<ExitCode, Error> {
     let mut counts = Vec::new();
     let mut total = 0;
     for chapter in chapters {
         let id = chapter.id;
-        let written = raystep_figure::write_all(&chapter.all_figures(), &out.join(id), format)?;
+        let written = raystep_figure::write_all(
+            &chapter.all_figures(),
+            &out.join(id),
+            format,
+        )?;
         for path in &written {
             println!("{}", shown(path));
         }
@@ -66,7 +74,11 @@ fn write(chapters: &[&Chapter], out: &Path, format: Format) -> Result<ExitCode, 
 }
 
 /// Compares every figure with the files in `out`, writing nothing.
-fn check(chapters: &[&Chapter], out: &Path, format: Format) -> Result<ExitCode, Error> {
+fn check(
+    chapters: &[&Chapter],
+    out: &Path,
+    format: Format,
+) -> Result<ExitCode, Error> {
     let mut mismatches = Vec::new();
     let mut expected = 0;
     for chapter in chapters {

@@ -195,7 +195,9 @@ pub fn shown(path: &Path) -> String {
 fn one_line(message: &str) -> String {
     let mut line = String::new();
     for part in message.lines().map(str::trim) {
-        if part.is_empty() || part.starts_with("Usage:") || part.starts_with("For more information")
+        if part.is_empty()
+            || part.starts_with("Usage:")
+            || part.starts_with("For more information")
         {
             continue;
         }
@@ -263,7 +265,10 @@ fn main() -> ExitCode {
             chapter,
             reference,
             target_dir: target_dir
-                .or_else(|| std::env::var_os("RAYSTEP_CHECK_TARGET_DIR").map(PathBuf::from))
+                .or_else(|| {
+                    std::env::var_os("RAYSTEP_CHECK_TARGET_DIR")
+                        .map(PathBuf::from)
+                })
                 // Cargo runs in the workspace root: a relative folder means the current one.
                 .map(|dir| std::path::absolute(&dir).unwrap_or(dir)),
             timeout: Duration::from_secs_f64(timeout),
@@ -285,7 +290,9 @@ mod tests {
 
     #[test]
     fn usage_errors_fit_on_one_line() {
-        let error = Cli::try_parse_from(["raystep", "figures", "--format", "gif"]).unwrap_err();
+        let error =
+            Cli::try_parse_from(["raystep", "figures", "--format", "gif"])
+                .unwrap_err();
         assert_eq!(
             one_line(&error.to_string()),
             "error: invalid value 'gif' for '--format <FORMAT>'; [possible values: svg, png, both]"
@@ -313,7 +320,12 @@ mod tests {
         );
         for bad in ["0", "-3", "NaN", "inf", "1e30", "soon"] {
             assert_eq!(
-                timeout(&["raystep", "check", "1", &format!("--timeout={bad}")]),
+                timeout(&[
+                    "raystep",
+                    "check",
+                    "1",
+                    &format!("--timeout={bad}")
+                ]),
                 Err(format!(
                     "error: invalid value '{bad}' for '--timeout <SECS>': \
                      expected a positive number of seconds"

@@ -26,7 +26,9 @@ pub struct Options {
 /// Runs every measurement (or one chapter's) and writes its CSV.
 pub fn run(options: &Options) -> Result<ExitCode, Error> {
     if options.repeats == 0 {
-        return Err(Error::Usage("--repeats 0: must be at least 1".to_string()));
+        return Err(Error::Usage(
+            "--repeats 0: must be at least 1".to_string(),
+        ));
     }
     let out = match &options.out {
         Some(out) => out.clone(),
@@ -48,10 +50,14 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
             .collect(),
     };
     for (chapter, measurement) in chosen {
-        let bar = progress_bar((measurement.steps)(options.repeats), measurement.what);
+        let bar = progress_bar(
+            (measurement.steps)(options.repeats),
+            measurement.what,
+        );
         let csv = (measurement.run)(options.repeats, &mut || bar.inc(1));
         bar.finish_and_clear();
-        let csv = csv.map_err(|e| Error::Usage(format!("{}: {e}", chapter.id)))?;
+        let csv =
+            csv.map_err(|e| Error::Usage(format!("{}: {e}", chapter.id)))?;
         let path = out.join(chapter.id).join(measurement.file);
         write_atomically(&path, csv.as_bytes())?;
         println!("wrote {} ({} rows)", shown(&path), csv.lines().count() - 1);
@@ -65,7 +71,9 @@ fn progress_bar(steps: u64, what: &str) -> ProgressBar {
         return ProgressBar::hidden();
     }
     let bar = ProgressBar::new(steps);
-    if let Ok(style) = ProgressStyle::with_template("{msg:12} [{bar:40}] {pos}/{len} {elapsed}") {
+    if let Ok(style) = ProgressStyle::with_template(
+        "{msg:12} [{bar:40}] {pos}/{len} {elapsed}",
+    ) {
         bar.set_style(style.progress_chars("=> "));
     }
     bar.set_message(what.to_string());
@@ -82,7 +90,9 @@ fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
         .map_or("out".into(), |n| n.to_string_lossy());
     let temp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
     let result = std::fs::File::create(&temp)
-        .and_then(|mut file| file.write_all(bytes).and_then(|()| file.sync_all()))
+        .and_then(|mut file| {
+            file.write_all(bytes).and_then(|()| file.sync_all())
+        })
         .and_then(|()| std::fs::rename(&temp, path));
     result.map_err(|e| {
         let _ = std::fs::remove_file(&temp);

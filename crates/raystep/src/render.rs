@@ -32,10 +32,13 @@ pub struct Options {
 /// Runs `raystep render`.
 pub fn run(options: &Options) -> Result<ExitCode, Error> {
     if options.threads == Some(0) {
-        return Err(Error::Usage("--threads 0: must be at least 1".to_string()));
+        return Err(Error::Usage(
+            "--threads 0: must be at least 1".to_string(),
+        ));
     }
     let file = shown(&options.scene);
-    let mut scene = raystep_scene::load(&options.scene).map_err(|e| Error::Usage(e.to_string()))?;
+    let mut scene = raystep_scene::load(&options.scene)
+        .map_err(|e| Error::Usage(e.to_string()))?;
     if let Some(size) = &options.size {
         (scene.width, scene.height) = parse_size(size)?;
     }
@@ -48,7 +51,8 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         threads: options.threads,
         progress: Progress::Auto,
     };
-    let image = renderer(&scene, &file, &render_options).map_err(Error::Usage)?;
+    let image =
+        renderer(&scene, &file, &render_options).map_err(Error::Usage)?;
     image
         .write_png(&out)
         .map_err(|e| Error::Usage(e.to_string()))?;
@@ -79,13 +83,18 @@ fn parse_size(size: &str) -> Result<(u32, u32), Error> {
 
 /// The renderer for `--chapter`, else the chapter folder holding the scene,
 /// else the latest.
-fn choose(chapter: Option<&str>, scene: &Path) -> Result<(&'static str, Renderer), Error> {
+fn choose(
+    chapter: Option<&str>,
+    scene: &Path,
+) -> Result<(&'static str, Renderer), Error> {
     let renderers: Vec<&Chapter> = CHAPTERS
         .iter()
         .copied()
         .filter(|c| c.renderer.is_some())
         .collect();
-    let pick = |c: &Chapter| (c.id, c.renderer.expect("only chapters with a renderer"));
+    let pick = |c: &Chapter| {
+        (c.id, c.renderer.expect("only chapters with a renderer"))
+    };
     if let Some(arg) = chapter {
         return Ok(pick(find(arg, &renderers)?));
     }
@@ -97,7 +106,9 @@ fn choose(chapter: Option<&str>, scene: &Path) -> Result<(&'static str, Renderer
                 .filter_map(|a| a.file_name()?.to_str().map(str::to_string))
                 .find(|name| name.starts_with("ch") && name.contains('-'))
         })
-        .and_then(|folder| renderers.iter().find(|c| folder.starts_with(c.id)).copied());
+        .and_then(|folder| {
+            renderers.iter().find(|c| folder.starts_with(c.id)).copied()
+        });
     match in_folder {
         Some(chapter) => Ok(pick(chapter)),
         None => Ok(pick(find(DEFAULT_RENDERER, &renderers)?)),

@@ -27,26 +27,37 @@ fn outer_target() -> PathBuf {
 
 /// (chapter id, exercises) for every `chapters/chNN-*` folder.
 fn chapters() -> Vec<(String, Vec<String>)> {
-    let mut chapters: Vec<(String, Vec<String>)> = fs::read_dir(workspace().join("chapters"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.join("Cargo.toml").is_file())
-        .map(|dir| {
-            let name = dir.file_name().unwrap().to_str().unwrap().to_string();
-            let id = name.split('-').next().unwrap().to_string();
-            let mut exercises: Vec<String> = fs::read_dir(dir.join("exercise"))
-                .map(|entries| {
-                    entries
-                        .map(|e| e.unwrap().path())
-                        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
-                        .map(|p| p.file_stem().unwrap().to_str().unwrap().to_string())
-                        .collect()
-                })
-                .unwrap_or_default();
-            exercises.sort();
-            (id, exercises)
-        })
-        .collect();
+    let mut chapters: Vec<(String, Vec<String>)> =
+        fs::read_dir(workspace().join("chapters"))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.join("Cargo.toml").is_file())
+            .map(|dir| {
+                let name =
+                    dir.file_name().unwrap().to_str().unwrap().to_string();
+                let id = name.split('-').next().unwrap().to_string();
+                let mut exercises: Vec<String> =
+                    fs::read_dir(dir.join("exercise"))
+                        .map(|entries| {
+                            entries
+                                .map(|e| e.unwrap().path())
+                                .filter(|p| {
+                                    p.extension().is_some_and(|x| x == "rs")
+                                })
+                                .map(|p| {
+                                    p.file_stem()
+                                        .unwrap()
+                                        .to_str()
+                                        .unwrap()
+                                        .to_string()
+                                })
+                                .collect()
+                        })
+                        .unwrap_or_default();
+                exercises.sort();
+                (id, exercises)
+            })
+            .collect();
     chapters.sort();
     chapters
 }
@@ -95,7 +106,9 @@ fn verdict<'a>(report: &'a str, stderr: &str, exercise: &str) -> &'a str {
             let rest = line.strip_prefix("  ")?.strip_prefix(exercise)?;
             rest.starts_with(' ').then(|| rest.trim())
         })
-        .unwrap_or_else(|| panic!("no line for exercise {exercise} in:\n{report}{stderr}"))
+        .unwrap_or_else(|| {
+            panic!("no line for exercise {exercise} in:\n{report}{stderr}")
+        })
 }
 
 #[test]
@@ -156,12 +169,13 @@ fn verdicts_do_not_depend_on_cargo_settings() {
         );
     }
 
-    let (ok, configured, stderr) = raystep(&["ch01"], &workspace(), |command| {
-        command
-            .envs(SETTINGS)
-            .env("CARGO_TARGET_DIR", outer_target())
-            .env_remove("RAYSTEP_CHECK_TARGET_DIR");
-    });
+    let (ok, configured, stderr) =
+        raystep(&["ch01"], &workspace(), |command| {
+            command
+                .envs(SETTINGS)
+                .env("CARGO_TARGET_DIR", outer_target())
+                .env_remove("RAYSTEP_CHECK_TARGET_DIR");
+        });
     assert!(!ok, "{configured}{stderr}");
     assert_eq!(configured, plain, "with {SETTINGS:?}:\n{stderr}");
 }

@@ -152,7 +152,8 @@ fn writing_twice_gives_identical_files_that_check_clean() {
 #[test]
 fn one_chapter_only() {
     let dir = scratch("one");
-    let out = raystep(&["figures", "--chapter", "1", "--out", dir.to_str().unwrap()]);
+    let out =
+        raystep(&["figures", "--chapter", "1", "--out", dir.to_str().unwrap()]);
     assert!(out.status.success(), "{}", text(&out.stderr));
     let folders: Vec<_> = fs::read_dir(&dir)
         .unwrap()
@@ -173,7 +174,9 @@ fn an_unknown_chapter_is_one_clear_error() {
         assert!(!out.status.success(), "{args:?}");
         // one line, naming every chapter (the list grows with the lecture)
         assert!(
-            stderr.starts_with("error: ch99: no such chapter; chapters are ch01, ch02, ch03"),
+            stderr.starts_with(
+                "error: ch99: no such chapter; chapters are ch01, ch02, ch03"
+            ),
             "{args:?}: {stderr}"
         );
         assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
@@ -185,7 +188,8 @@ fn an_unwritable_folder_is_one_clear_error() {
     let dir = scratch("unwritable");
     let file = dir.join("a-file");
     fs::write(&file, "not a folder").unwrap();
-    let out = raystep(&["figures", "--out", file.join("figures").to_str().unwrap()]);
+    let out =
+        raystep(&["figures", "--out", file.join("figures").to_str().unwrap()]);
     let stderr = text(&out.stderr);
     assert!(!out.status.success());
     assert_eq!(stderr.lines().count(), 1, "{stderr}");
@@ -199,7 +203,13 @@ fn an_unwritable_folder_is_one_clear_error() {
 #[test]
 fn a_bad_format_is_refused() {
     let dir = scratch("format");
-    let out = raystep(&["figures", "--format", "gif", "--out", dir.to_str().unwrap()]);
+    let out = raystep(&[
+        "figures",
+        "--format",
+        "gif",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
     assert!(!out.status.success());
     let stderr = text(&out.stderr);
     assert!(stderr.contains("invalid value 'gif'"), "{stderr}");

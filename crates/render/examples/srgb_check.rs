@@ -14,7 +14,8 @@ use raystep_render::{Progress, RenderOptions, Rgb, render};
 
 /// A fully saturated colour of hue `h` (turns, 0..1), linear RGB.
 fn hue(h: f64) -> Rgb {
-    let channel = |offset: f64| (0.5 + 0.5 * (TAU * (h - offset)).cos()).powi(2);
+    let channel =
+        |offset: f64| (0.5 + 0.5 * (TAU * (h - offset)).cos()).powi(2);
     Rgb::new(channel(0.0), channel(1.0 / 3.0), channel(2.0 / 3.0))
 }
 

@@ -43,7 +43,10 @@ pub fn from_csv<R: CsvRow>(text: &str) -> Result<Vec<R>, String> {
 /// The data lines of `text`, whose first line must be `header`; blank lines
 /// are skipped. An error names the line: a wrong header, or a line without
 /// one field per column of the header.
-pub fn records<'a>(text: &'a str, header: &str) -> Result<Vec<Record<'a>>, String> {
+pub fn records<'a>(
+    text: &'a str,
+    header: &str,
+) -> Result<Vec<Record<'a>>, String> {
     let mut lines = text.lines().enumerate();
     match lines.next() {
         Some((_, first)) if first.trim() == header => {}
@@ -90,14 +93,19 @@ impl<'a> Record<'a> {
             .parse::<f64>()
             .ok()
             .filter(|x| x.is_finite())
-            .ok_or_else(|| self.error(format!("{name} `{}` is not a number", self.fields[k])))
+            .ok_or_else(|| {
+                self.error(format!(
+                    "{name} `{}` is not a number",
+                    self.fields[k]
+                ))
+            })
     }
 
     /// Field `k` as a count (a whole number ≥ 0); the error calls it `name`.
     pub fn count(&self, k: usize, name: &str) -> Result<u64, String> {
-        self.fields[k]
-            .parse::<u64>()
-            .map_err(|_| self.error(format!("{name} `{}` is not a count", self.fields[k])))
+        self.fields[k].parse::<u64>().map_err(|_| {
+            self.error(format!("{name} `{}` is not a count", self.fields[k]))
+        })
     }
 
     /// `message` on this line: `line 4: message`.

@@ -24,7 +24,10 @@ pub struct Image {
 }
 
 /// The number of pixels of a `width × height` image, if it is a valid size.
-pub(crate) fn pixel_count(width: u32, height: u32) -> Result<usize, RenderError> {
+pub(crate) fn pixel_count(
+    width: u32,
+    height: u32,
+) -> Result<usize, RenderError> {
     if width == 0 || height == 0 {
         return Err(RenderError::InvalidSize { width, height });
     }
@@ -52,7 +55,11 @@ impl Image {
     /// # Panics
     ///
     /// If `width` or `height` is 0, like [`Image::new`].
-    pub fn from_fn(width: u32, height: u32, mut f: impl FnMut(u32, u32) -> Rgb) -> Image {
+    pub fn from_fn(
+        width: u32,
+        height: u32,
+        mut f: impl FnMut(u32, u32) -> Rgb,
+    ) -> Image {
         if let Err(e) = pixel_count(width, height) {
             panic!("{e}");
         }
@@ -69,8 +76,15 @@ impl Image {
 
     /// An image from its pixels, row-major from the top. The caller has
     /// checked the size (`pixels.len() == width * height`, both ≥ 1).
-    pub(crate) fn from_pixels(width: u32, height: u32, pixels: Vec<Rgb>) -> Image {
-        debug_assert_eq!(pixels.len() as u64, u64::from(width) * u64::from(height));
+    pub(crate) fn from_pixels(
+        width: u32,
+        height: u32,
+        pixels: Vec<Rgb>,
+    ) -> Image {
+        debug_assert_eq!(
+            pixels.len() as u64,
+            u64::from(width) * u64::from(height)
+        );
         Image {
             width,
             height,
@@ -151,8 +165,11 @@ impl Image {
     /// figure shows no spurious change in version control.
     pub fn encode_png(&self) -> Vec<u8> {
         let mut bytes = Vec::new();
-        let encoder =
-            PngEncoder::new_with_quality(&mut bytes, CompressionType::Best, FilterType::Adaptive);
+        let encoder = PngEncoder::new_with_quality(
+            &mut bytes,
+            CompressionType::Best,
+            FilterType::Adaptive,
+        );
         encoder
             .write_image(
                 &self.to_srgb8(),
@@ -203,12 +220,13 @@ impl Image {
             path: path.to_path_buf(),
             source,
         })?;
-        let decoded = ::image::load_from_memory_with_format(&bytes, ImageFormat::Png)
-            .map_err(|source| RenderError::Decode {
-                path: path.to_path_buf(),
-                source,
-            })?
-            .to_rgb8();
+        let decoded =
+            ::image::load_from_memory_with_format(&bytes, ImageFormat::Png)
+                .map_err(|source| RenderError::Decode {
+                    path: path.to_path_buf(),
+                    source,
+                })?
+                .to_rgb8();
         let (width, height) = decoded.dimensions();
         Image::from_srgb8(width, height, decoded.as_raw())
             .ok_or_else(|| RenderError::InvalidSize { width, height })
@@ -248,7 +266,8 @@ impl Image {
                         n += 1.0;
                     }
                 }
-                let level = (linear_to_srgb(sum / n) * RAMP.len() as f64) as usize;
+                let level =
+                    (linear_to_srgb(sum / n) * RAMP.len() as f64) as usize;
                 out.push(RAMP[level.min(RAMP.len() - 1)] as char);
             }
             out.push('\n');
@@ -261,7 +280,10 @@ impl Image {
 /// rename stays on one file system) and hidden: `.<name>.<pid>.tmp`.
 fn temp_path(path: &Path) -> std::io::Result<PathBuf> {
     let name = path.file_name().ok_or_else(|| {
-        std::io::Error::new(std::io::ErrorKind::InvalidInput, "the path names no file")
+        std::io::Error::new(
+            std::io::ErrorKind::InvalidInput,
+            "the path names no file",
+        )
     })?;
     let mut temp_name = std::ffi::OsString::from(".");
     temp_name.push(name);
@@ -275,8 +297,8 @@ mod tests {
 
     /// A folder of its own for one test, emptied first.
     fn scratch(test: &str) -> PathBuf {
-        let dir =
-            std::env::temp_dir().join(format!("raystep-render-{}-{test}", std::process::id()));
+        let dir = std::env::temp_dir()
+            .join(format!("raystep-render-{}-{test}", std::process::id()));
         let _ = fs::remove_dir_all(&dir);
         fs::create_dir_all(&dir).unwrap();
         dir
@@ -284,7 +306,8 @@ mod tests {
 
     fn colourful(w: u32, h: u32) -> Image {
         Image::from_fn(w, h, |x, y| {
-            let (u, v) = (f64::from(x) / f64::from(w), f64::from(y) / f64::from(h));
+            let (u, v) =
+                (f64::from(x) / f64::from(w), f64::from(y) / f64::from(h));
             Rgb::new(u, v, (u * 7.0 + v * 3.0).sin().abs())
         })
     }
@@ -300,7 +323,9 @@ mod tests {
             (image.width(), image.height(), image.pixels().len()),
             (3, 2, 6)
         );
-        let f = Image::from_fn(3, 2, |x, y| Rgb::new(f64::from(x), f64::from(y), 0.0));
+        let f = Image::from_fn(3, 2, |x, y| {
+            Rgb::new(f64::from(x), f64::from(y), 0.0)
+        });
         assert_eq!(f.pixels()[4], Rgb::new(1.0, 1.0, 0.0));
         assert_eq!(&f.to_srgb8()[12..15], &[255, 255, 0]);
     }
@@ -382,7 +407,8 @@ mod tests {
     fn from_srgb8_checks_the_length() {
         assert!(Image::from_srgb8(2, 1, &[0; 5]).is_none());
         assert!(Image::from_srgb8(0, 1, &[]).is_none());
-        let image = Image::from_srgb8(2, 1, &[0, 128, 255, 188, 188, 188]).unwrap();
+        let image =
+            Image::from_srgb8(2, 1, &[0, 128, 255, 188, 188, 188]).unwrap();
         assert_eq!(image.to_srgb8(), [0, 128, 255, 188, 188, 188]);
         assert!((image.get(1, 0).x - 0.5).abs() < 0.003);
     }

@@ -31,7 +31,9 @@ mod parallel;
 pub mod timing;
 
 pub use self::image::Image;
-pub use color::{Rgb, linear_from_srgb8, linear_to_srgb, srgb_to_linear, srgb8};
+pub use color::{
+    Rgb, linear_from_srgb8, linear_to_srgb, srgb_to_linear, srgb8,
+};
 pub use error::RenderError;
 pub use image_error::{ImageError, image_error};
 pub use parallel::{Progress, RenderOptions, render};

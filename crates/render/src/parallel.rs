@@ -69,22 +69,24 @@ pub fn render(
                 .num_threads(threads)
                 .thread_name(|i| format!("raystep-render-{i}"))
                 .build()
-                .map_err(|source| RenderError::ThreadPool { threads, source })?,
+                .map_err(|source| RenderError::ThreadPool {
+                    threads,
+                    source,
+                })?,
         ),
     };
     let bar = progress_bar(options.progress, height);
     let mut pixels = vec![Rgb::ZERO; count];
     let mut fill = || {
-        pixels
-            .par_chunks_mut(width as usize)
-            .enumerate()
-            .for_each(|(y, row)| {
+        pixels.par_chunks_mut(width as usize).enumerate().for_each(
+            |(y, row)| {
                 let y = y as u32; // y < height, a u32
                 for (x, p) in (0..width).zip(row.iter_mut()) {
                     *p = pixel(x, y);
                 }
                 bar.inc(1);
-            });
+            },
+        );
     };
     match &pool {
         Some(pool) => pool.install(fill),
@@ -95,7 +97,8 @@ pub fn render(
 }
 
 /// What the bar shows: time so far, the bar, rows done, time left.
-const BAR_TEMPLATE: &str = "{elapsed_precise} [{wide_bar}] {pos}/{len} rows, {eta} left";
+const BAR_TEMPLATE: &str =
+    "{elapsed_precise} [{wide_bar}] {pos}/{len} rows, {eta} left";
 
 /// A bar counting `rows`, drawn on stderr, or a hidden one.
 fn progress_bar(progress: Progress, rows: u32) -> ProgressBar {
@@ -106,7 +109,10 @@ fn progress_bar(progress: Progress, rows: u32) -> ProgressBar {
     if !show {
         return ProgressBar::hidden();
     }
-    let bar = ProgressBar::with_draw_target(Some(u64::from(rows)), ProgressDrawTarget::stderr());
+    let bar = ProgressBar::with_draw_target(
+        Some(u64::from(rows)),
+        ProgressDrawTarget::stderr(),
+    );
     // The template is a constant: it parses, or a test fails.
     if let Ok(style) = ProgressStyle::with_template(BAR_TEMPLATE) {
         bar.set_style(style.progress_chars("=> "));
@@ -121,7 +127,8 @@ mod tests {
     /// Enough floating-point work that a different evaluation order would
     /// show: a little chaotic iteration per pixel.
     fn busy_pixel(x: u32, y: u32) -> Rgb {
-        let (mut a, mut b) = (f64::from(x) * 0.0137 + 0.1, f64::from(y) * 0.0291 + 0.2);
+        let (mut a, mut b) =
+            (f64::from(x) * 0.0137 + 0.1, f64::from(y) * 0.0291 + 0.2);
         for _ in 0..200 {
             let t = a * a - b * b + 0.3 * a.sin();
             b = 2.0 * a * b + 0.1 * b.cos() + 0.01;
@@ -186,7 +193,8 @@ mod tests {
     fn the_progress_template_parses() {
         assert!(ProgressStyle::with_template(BAR_TEMPLATE).is_ok());
         // Auto in a test run: stderr is captured or a pipe, so no bar
-        let image = render(2, 2, &RenderOptions::default(), |_, _| Rgb::ONE).unwrap();
+        let image =
+            render(2, 2, &RenderOptions::default(), |_, _| Rgb::ONE).unwrap();
         assert_eq!(image, Image::from_fn(2, 2, |_, _| Rgb::ONE));
     }
 }

@@ -27,7 +27,11 @@ impl Timing {
     /// Times every job, taking turns, after one untimed run of each to warm
     /// the caches; returns each job's median time per run in milliseconds.
     /// `step` is called once per round.
-    pub fn median_ms(self, jobs: &mut [&mut dyn FnMut()], mut step: impl FnMut()) -> Vec<f64> {
+    pub fn median_ms(
+        self,
+        jobs: &mut [&mut dyn FnMut()],
+        mut step: impl FnMut(),
+    ) -> Vec<f64> {
         for job in jobs.iter_mut() {
             job();
         }
@@ -50,7 +54,8 @@ impl Timing {
                 for _ in 0..batch {
                     jobs[k]();
                 }
-                samples[k].push(start.elapsed().as_secs_f64() * 1e3 / batch as f64);
+                samples[k]
+                    .push(start.elapsed().as_secs_f64() * 1e3 / batch as f64);
             }
             step();
         }
@@ -76,7 +81,8 @@ mod tests {
             rounds: 3,
             batch: 4,
         };
-        let times = timing.median_ms(&mut [&mut || a += 1, &mut || b += 1], || steps += 1);
+        let times = timing
+            .median_ms(&mut [&mut || a += 1, &mut || b += 1], || steps += 1);
         assert_eq!((a, b, steps), (13, 13, 3));
         assert_eq!(times.len(), 2);
         assert!(times.iter().all(|t| t.is_finite() && *t >= 0.0));

@@ -80,7 +80,11 @@ pub(crate) struct Context<'a> {
 
 impl<'a> Context<'a> {
     /// Remembers the path and span of every value in `document`.
-    pub(crate) fn new(source: &'a str, file: &'a str, document: &Spanned<DeTable<'_>>) -> Self {
+    pub(crate) fn new(
+        source: &'a str,
+        file: &'a str,
+        document: &Spanned<DeTable<'_>>,
+    ) -> Self {
         let mut nodes = Vec::new();
         collect_table(document.get_ref(), "", 1, &mut nodes);
         Context {
@@ -101,7 +105,8 @@ impl<'a> Context<'a> {
         if span.is_empty() {
             return String::new();
         }
-        let contains = |r: &Range<usize>| r.start <= span.start && span.end <= r.end;
+        let contains =
+            |r: &Range<usize>| r.start <= span.start && span.end <= r.end;
         let mut best: Option<(usize, usize, &str)> = None;
         for node in &self.nodes {
             let candidates = [Some(&node.value), node.key.as_ref()];
@@ -110,7 +115,8 @@ impl<'a> Context<'a> {
                     let better = match best {
                         None => true,
                         Some((len, depth, _)) => {
-                            r.len() < len || (r.len() == len && node.depth > depth)
+                            r.len() < len
+                                || (r.len() == len && node.depth > depth)
                         }
                     };
                     if better {
@@ -123,7 +129,11 @@ impl<'a> Context<'a> {
     }
 
     /// An error about the value at `span`; the field is found from the span.
-    pub(crate) fn error(&self, span: Range<usize>, message: impl Into<String>) -> SceneError {
+    pub(crate) fn error(
+        &self,
+        span: Range<usize>,
+        message: impl Into<String>,
+    ) -> SceneError {
         let field = self.field_at(&span);
         self.error_in(span, field, message)
     }
@@ -163,7 +173,8 @@ impl<'a> Context<'a> {
             .strip_prefix("unknown field `")
             .and_then(|m| m.split_once("`, ").map(|(_, rest)| rest))
         {
-            let name = between(message, "unknown field `", "`").unwrap_or_default();
+            let name =
+                between(message, "unknown field `", "`").unwrap_or_default();
             let parent = self.field_at(&span);
             if TOP_LEVEL.contains(&name) && parent.contains('.') {
                 // `objects = [...]` written below `[camera]` is read as
@@ -230,7 +241,12 @@ fn join(parent: &str, key: &str) -> String {
     }
 }
 
-fn collect_table(table: &DeTable<'_>, path: &str, depth: usize, nodes: &mut Vec<Node>) {
+fn collect_table(
+    table: &DeTable<'_>,
+    path: &str,
+    depth: usize,
+    nodes: &mut Vec<Node>,
+) {
     for (key, value) in table.iter() {
         let path = join(path, key.get_ref());
         nodes.push(Node {
@@ -243,7 +259,12 @@ fn collect_table(table: &DeTable<'_>, path: &str, depth: usize, nodes: &mut Vec<
     }
 }
 
-fn collect_value(value: &DeValue<'_>, path: &str, depth: usize, nodes: &mut Vec<Node>) {
+fn collect_value(
+    value: &DeValue<'_>,
+    path: &str,
+    depth: usize,
+    nodes: &mut Vec<Node>,
+) {
     match value {
         DeValue::Table(table) => collect_table(table, path, depth, nodes),
         DeValue::Array(array) => {

@@ -166,7 +166,13 @@ pub struct CameraSpec {
 impl CameraSpec {
     /// The camera for a picture `aspect` (width / height) wide.
     pub fn camera(&self, aspect: f64) -> Camera {
-        Camera::look_at(self.look_from, self.look_at, self.up, self.vfov, aspect)
+        Camera::look_at(
+            self.look_from,
+            self.look_at,
+            self.up,
+            self.vfov,
+            aspect,
+        )
     }
 }
 
@@ -311,10 +317,11 @@ impl Shape {
 /// Reads and checks the scene file at `path`. Errors name the file as
 /// `path` shows it.
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
-    let source = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
-        path: path.to_owned(),
-        source,
-    })?;
+    let source =
+        std::fs::read_to_string(path).map_err(|source| SceneError::Read {
+            path: path.to_owned(),
+            source,
+        })?;
     parse(&source, &path.display().to_string())
 }
 
@@ -434,14 +441,19 @@ fn build(raw: RawScene, cx: &Context) -> Result<Scene, SceneError> {
     })
 }
 
-fn camera(raw: Spanned<Table<raw::RawCamera>>, cx: &Context) -> Result<CameraSpec, SceneError> {
+fn camera(
+    raw: Spanned<Table<raw::RawCamera>>,
+    cx: &Context,
+) -> Result<CameraSpec, SceneError> {
     let table_span = raw.span();
     let Table(c) = raw.into_inner();
     let look_from = c.look_from.0;
     let look_at = c.look_at.get_ref().0;
     let vfov = match c.vfov {
         None => DEFAULT_VFOV,
-        Some(v) if v.get_ref().0 > 0.0 && v.get_ref().0 < 180.0 => v.get_ref().0,
+        Some(v) if v.get_ref().0 > 0.0 && v.get_ref().0 < 180.0 => {
+            v.get_ref().0
+        }
         Some(v) => {
             return Err(cx.error(
                 v.span(),
@@ -531,7 +543,10 @@ fn material(
         Some(p) => {
             return Err(cx.error(
                 p.span(),
-                format!("must be positive, got {}", format_number(p.get_ref().0)),
+                format!(
+                    "must be positive, got {}",
+                    format_number(p.get_ref().0)
+                ),
             ));
         }
     };
@@ -595,10 +610,14 @@ fn object(
             let n = p.normal.get_ref().0;
             // Scaled first, so that a normal like [0, 1e-200, 0] still has
             // a direction.
-            let Some(normal) = (n / n.abs().max_element()).try_normalize() else {
+            let Some(normal) = (n / n.abs().max_element()).try_normalize()
+            else {
                 return Err(cx.error(
                     p.normal.span(),
-                    format!("must have a non-zero length, got {}", format_vec(n)),
+                    format!(
+                        "must have a non-zero length, got {}",
+                        format_vec(n)
+                    ),
                 ));
             };
             Shape::Plane {
@@ -616,7 +635,12 @@ fn object(
                 ));
             }
             Shape::Polygon {
-                vertices: p.vertices.into_inner().into_iter().map(|v| v.0).collect(),
+                vertices: p
+                    .vertices
+                    .into_inner()
+                    .into_iter()
+                    .map(|v| v.0)
+                    .collect(),
             }
         }
         (sphere, plane, polygon) => {
@@ -646,7 +670,8 @@ fn object(
             .iter()
             .position(|m| m.name == *name.get_ref())
             .ok_or_else(|| {
-                let defined: Vec<&str> = materials.iter().map(|m| m.name.as_str()).collect();
+                let defined: Vec<&str> =
+                    materials.iter().map(|m| m.name.as_str()).collect();
                 cx.error(
                     name.span(),
                     format!(

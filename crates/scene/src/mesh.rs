@@ -109,7 +109,12 @@ impl Mesh {
             let ab = midpoint(a, b, &mut vertices);
             let bc = midpoint(b, c, &mut vertices);
             let ca = midpoint(c, a, &mut vertices);
-            triangles.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
+            triangles.extend([
+                [a, ab, ca],
+                [b, bc, ab],
+                [c, ca, bc],
+                [ab, bc, ca],
+            ]);
         }
         Mesh {
             vertices,
@@ -125,10 +130,11 @@ impl Mesh {
             single_index: true,
             ..tobj::LoadOptions::default()
         };
-        let (models, _) = tobj::load_obj(path, &options).map_err(|e| MeshError::Obj {
-            file: file.clone(),
-            message: e.to_string(),
-        })?;
+        let (models, _) =
+            tobj::load_obj(path, &options).map_err(|e| MeshError::Obj {
+                file: file.clone(),
+                message: e.to_string(),
+            })?;
         let mut mesh = Mesh {
             vertices: Vec::new(),
             triangles: Vec::new(),
@@ -136,11 +142,9 @@ impl Mesh {
         for model in models {
             let first = mesh.vertices.len();
             let m = model.mesh;
-            mesh.vertices.extend(
-                m.positions
-                    .chunks_exact(3)
-                    .map(|p| DVec3::new(f64::from(p[0]), f64::from(p[1]), f64::from(p[2]))),
-            );
+            mesh.vertices.extend(m.positions.chunks_exact(3).map(|p| {
+                DVec3::new(f64::from(p[0]), f64::from(p[1]), f64::from(p[2]))
+            }));
             mesh.triangles.extend(m.indices.chunks_exact(3).map(|t| {
                 [
                     first + t[0] as usize,
@@ -201,7 +205,10 @@ mod tests {
             // counter-clockwise from outside: every normal points away
             for k in 0..mesh.triangles.len() {
                 let [a, b, c] = mesh.triangle(k);
-                assert!((b - a).cross(c - a).dot(a + b + c) > 0.0, "triangle {k}");
+                assert!(
+                    (b - a).cross(c - a).dot(a + b + c) > 0.0,
+                    "triangle {k}"
+                );
             }
         }
     }

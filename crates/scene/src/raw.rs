@@ -14,7 +14,9 @@ use std::marker::PhantomData;
 
 use raystep_core::DVec3;
 use serde::Deserialize;
-use serde::de::{self, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
+use serde::de::{
+    self, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor,
+};
 use toml::Spanned;
 
 use crate::{REFRACTIVE_INDICES, format_number, index_of_refraction};
@@ -133,14 +135,19 @@ pub(crate) struct RawPolygon {
 pub(crate) struct Table<T>(pub T);
 
 impl<'de, T: Deserialize<'de>> Deserialize<'de> for Table<T> {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+    fn deserialize<D: Deserializer<'de>>(
+        deserializer: D,
+    ) -> Result<Self, D::Error> {
         struct TableVisitor<T>(PhantomData<T>);
         impl<'de, T: Deserialize<'de>> Visitor<'de> for TableVisitor<T> {
             type Value = T;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
                 f.write_str("a table")
             }
-            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<T, A::Error> {
+            fn visit_map<A: MapAccess<'de>>(
+                self,
+                map: A,
+            ) -> Result<T, A::Error> {
                 T::deserialize(de::value::MapAccessDeserializer::new(map))
             }
         }
@@ -212,7 +219,9 @@ fn component<E: de::Error>(v: f64) -> Result<f64, E> {
 }
 
 impl<'de> Deserialize<'de> for Finite {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+    fn deserialize<D: Deserializer<'de>>(
+        deserializer: D,
+    ) -> Result<Self, D::Error> {
         struct V;
         impl Visitor<'_> for V {
             type Value = Finite;
@@ -226,7 +235,9 @@ impl<'de> Deserialize<'de> for Finite {
 }
 
 impl<'de> Deserialize<'de> for Component {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+    fn deserialize<D: Deserializer<'de>>(
+        deserializer: D,
+    ) -> Result<Self, D::Error> {
         struct V;
         impl Visitor<'_> for V {
             type Value = Component;
@@ -268,14 +279,19 @@ where
 }
 
 impl<'de> Deserialize<'de> for Vec3 {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+    fn deserialize<D: Deserializer<'de>>(
+        deserializer: D,
+    ) -> Result<Self, D::Error> {
         struct V;
         impl<'de> Visitor<'de> for V {
             type Value = Vec3;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
                 f.write_str("an array of 3 numbers [x, y, z]")
             }
-            fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Vec3, A::Error> {
+            fn visit_seq<A: SeqAccess<'de>>(
+                self,
+                seq: A,
+            ) -> Result<Vec3, A::Error> {
                 let [x, y, z] = three::<Finite, _>(seq, "[x, y, z]")?;
                 Ok(Vec3(DVec3::new(x.0, y.0, z.0)))
             }
@@ -285,7 +301,9 @@ impl<'de> Deserialize<'de> for Vec3 {
 }
 
 impl<'de> Deserialize<'de> for Colour {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+    fn deserialize<D: Deserializer<'de>>(
+        deserializer: D,
+    ) -> Result<Self, D::Error> {
         struct V;
         impl<'de> Visitor<'de> for V {
             type Value = Colour;
@@ -293,7 +311,10 @@ impl<'de> Deserialize<'de> for Colour {
                 f.write_str("a number or an array of 3 numbers [r, g, b]")
             }
             visit_numbers!(|v| component(v).map(|v| Colour(DVec3::splat(v))));
-            fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Colour, A::Error> {
+            fn visit_seq<A: SeqAccess<'de>>(
+                self,
+                seq: A,
+            ) -> Result<Colour, A::Error> {
                 let [r, g, b] = three::<Component, _>(seq, "[r, g, b]")?;
                 Ok(Colour(DVec3::new(r.0, g.0, b.0)))
             }
@@ -303,7 +324,9 @@ impl<'de> Deserialize<'de> for Colour {
 }
 
 impl<'de> Deserialize<'de> for Ior {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+    fn deserialize<D: Deserializer<'de>>(
+        deserializer: D,
+    ) -> Result<Self, D::Error> {
         struct V;
         impl Visitor<'_> for V {
             type Value = Ior;

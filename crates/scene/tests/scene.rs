@@ -5,8 +5,8 @@ use std::path::Path;
 
 use raystep_core::DVec3;
 use raystep_scene::{
-    CameraSpec, Checker, Light, MAX_SIZE, Material, Object, REFRACTIVE_INDICES, Scene, SceneError,
-    Shape, index_of_refraction, load, parse,
+    CameraSpec, Checker, Light, MAX_SIZE, Material, Object, REFRACTIVE_INDICES,
+    Scene, SceneError, Shape, index_of_refraction, load, parse,
 };
 
 const EXAMPLE: &str = include_str!("../src/example.toml");
@@ -102,7 +102,11 @@ fn the_complete_example_scene_reads_into_the_expected_values() {
             },
             Object {
                 shape: Shape::Polygon {
-                    vertices: vec![v(-2.0, -1.0, -2.0), v(2.0, -1.0, -2.0), v(0.0, 2.0, -2.0)],
+                    vertices: vec![
+                        v(-2.0, -1.0, -2.0),
+                        v(2.0, -1.0, -2.0),
+                        v(0.0, 2.0, -2.0),
+                    ],
                 },
                 material: 1,
                 line: 61,
@@ -202,8 +206,7 @@ fn ior_takes_the_lectures_names_or_a_number() {
     assert_eq!(index_of_refraction("diamond"), Some(2.417));
     assert_eq!(index_of_refraction("DIAMOND"), Some(2.417));
     assert_eq!(index_of_refraction("unobtainium"), None);
-    let numeric =
-        "[camera]\nlook_from = [0, 1, 5]\nlook_at = [0, 0, 0]\n[materials.m]\nior = 1.7\n";
+    let numeric = "[camera]\nlook_from = [0, 1, 5]\nlook_at = [0, 0, 0]\n[materials.m]\nior = 1.7\n";
     assert_eq!(parse(numeric, "ior.toml").unwrap().materials[1].ior, 1.7);
 }
 
@@ -417,13 +420,15 @@ fn a_tiny_plane_normal_still_has_a_direction() {
 
 #[test]
 fn limits_are_inclusive() {
-    let source = format!("{}[image]\nwidth = 1\nheight = {MAX_SIZE}\n", camera!());
+    let source =
+        format!("{}[image]\nwidth = 1\nheight = {MAX_SIZE}\n", camera!());
     let scene = parse(&source, "ok.toml").unwrap();
     assert_eq!((scene.width, scene.height), (1, MAX_SIZE));
 }
 
 #[test]
-fn a_checker_alternates_cube_by_cube_and_the_default_tiles_are_the_materials_own() {
+fn a_checker_alternates_cube_by_cube_and_the_default_tiles_are_the_materials_own()
+ {
     let scene = parse(
         "[camera]\nlook_from = [0, 1, 5]\nlook_at = [0, 0, 0]\n\
          [materials.floor]\nkd = 0.8\nchecker = { size = 2, kd = [0.2, 0, 0] }\n",

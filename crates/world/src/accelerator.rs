@@ -31,6 +31,11 @@ pub trait Accelerator: std::fmt::Debug + Send + Sync {
 
     /// Does any of `objects` meet `ray` with `t` in `interval`? (A shadow
     /// ray asks only this: one blocker is enough.)
-    fn any_hit(&self, objects: &[Object], ray: &Ray, interval: Interval) -> bool;
+    fn any_hit(
+        &self,
+        objects: &[Object],
+        ray: &Ray,
+        interval: Interval,
+    ) -> bool;
 }
 // ANCHOR_END: accelerator

@@ -31,7 +31,8 @@ pub struct Object {
 
 /// Turns one shape of a scene file into a surface, or says why it cannot
 /// (a degenerate polygon, or a kind of shape the chapter has not taught).
-pub type MakeShape = fn(&raystep_scene::Shape) -> Result<Arc<dyn Shape>, String>;
+pub type MakeShape =
+    fn(&raystep_scene::Shape) -> Result<Arc<dyn Shape>, String>;
 
 /// Why a scene cannot be built into a world.
 #[derive(Debug, Error)]
@@ -93,12 +94,14 @@ impl World {
     ) -> Result<World, WorldError> {
         let mut objects = Vec::with_capacity(scene.objects.len());
         for (index, object) in scene.objects.iter().enumerate() {
-            let shape = make_shape(&object.shape).map_err(|message| WorldError::Shape {
-                file: file.to_string(),
-                line: object.line,
-                index,
-                kind: object.shape.kind(),
-                message,
+            let shape = make_shape(&object.shape).map_err(|message| {
+                WorldError::Shape {
+                    file: file.to_string(),
+                    line: object.line,
+                    index,
+                    kind: object.shape.kind(),
+                    message,
+                }
             })?;
             objects.push(Object {
                 shape,
@@ -121,7 +124,11 @@ impl World {
 
     /// The closest hit of `ray` within `interval`: which object, and the
     /// hit (asked of the [`Accelerator`]).
-    pub fn closest_hit(&self, ray: &Ray, interval: Interval) -> Option<(usize, Hit)> {
+    pub fn closest_hit(
+        &self,
+        ray: &Ray,
+        interval: Interval,
+    ) -> Option<(usize, Hit)> {
         self.accelerator.closest_hit(&self.objects, ray, interval)
     }
 

@@ -2,7 +2,9 @@
 //!
 //! Every vector and number shown (V, N, f(Q), E₁, E₂, the error texts)
 //! comes from [`Line2::through`], [`rotate90`] and [`Plane::through`].
-use raystep_figure::{Anchor, DVec2, DVec3, Figure, Page, Projection, Stroke, palette};
+use raystep_figure::{
+    Anchor, DVec2, DVec3, Figure, Page, Projection, Stroke, palette,
+};
 
 use ch01::{Line2, Plane, rotate90};
 
@@ -26,7 +28,8 @@ fn line_sign() -> Figure {
     let line = Line2::through(LINE_P0, LINE_P1).expect("P₀ ≠ P₁ gives a line");
     let (v, n) = (line.direction, line.normal);
     // 100 px per unit: the grid cells are big enough to hold every label.
-    let mut page = Page::new(640.0, 420.0).view(DVec2::new(-0.46, -0.36), DVec2::new(5.46, 3.36));
+    let mut page = Page::new(640.0, 420.0)
+        .view(DVec2::new(-0.46, -0.36), DVec2::new(5.46, 3.36));
 
     // f / 4 splits the bands at |f| = 1, 2 and 4: every band edge is a line
     // parallel to f = 0 at that distance, and N's tip lies on the first.
@@ -77,7 +80,8 @@ fn rotation() -> Figure {
         .expect("P₀ ≠ P₁ gives a line")
         .direction;
     let n = rotate90(v);
-    let mut page = Page::new(640.0, 420.0).view(DVec2::new(-0.9, -0.12), DVec2::new(1.0, 0.9));
+    let mut page = Page::new(640.0, 420.0)
+        .view(DVec2::new(-0.9, -0.12), DVec2::new(1.0, 0.9));
 
     let o = DVec2::ZERO;
     let legs = Stroke::new(palette::BLACK).thin().dashed();
@@ -114,7 +118,9 @@ fn rotation() -> Figure {
 /// Small x and y axes at `at`, each `len` world units long.
 fn axes_2d(page: &mut Page, at: DVec2, len: f64) {
     let stroke = Stroke::new(palette::GREY).width(1.5);
-    for (axis, name, anchor) in [(DVec2::X, "x", Anchor::E), (DVec2::Y, "y", Anchor::N)] {
+    for (axis, name, anchor) in
+        [(DVec2::X, "x", Anchor::E), (DVec2::Y, "y", Anchor::N)]
+    {
         page.arrow(at, at + len * axis, &stroke);
         page.label_sized(at + len * axis, name, anchor, 16.0, palette::GREY);
     }
@@ -150,28 +156,32 @@ fn axes_3d(page: &mut Page, proj: &Projection, at: DVec2, len: f64) {
 /// The plane through P₀, P₁, P₂ with E₁, E₂ and N = E₁×E₂/|E₁×E₂|.
 fn plane() -> Figure {
     let [p0, p1, p2] = PLANE_P;
-    let plane = Plane::through(p0, p1, p2).expect("three points in general position");
+    let plane =
+        Plane::through(p0, p1, p2).expect("three points in general position");
     let n = plane.normal;
     let (e1, e2) = (p1 - p0, p2 - p0);
     let proj = oblique();
     let pr = |p: DVec3| proj.project(p);
-    let mut page = Page::new(640.0, 420.0).view(DVec2::new(-1.3, -1.27), DVec2::new(3.75, 1.28));
+    let mut page = Page::new(640.0, 420.0)
+        .view(DVec2::new(-1.3, -1.27), DVec2::new(3.75, 1.28));
 
     // A patch of the plane: a rectangle in the plane around the triangle,
     // its sides along u (x made to lie in the plane) and w = N×u.
     let u = (DVec3::X - DVec3::X.dot(n) * n).normalize();
     let w = n.cross(u);
     let centre = (p0 + p1 + p2) / 3.0;
-    let (mut lo, mut hi) = (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY));
+    let (mut lo, mut hi) =
+        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY));
     for p in PLANE_P {
         let local = DVec2::new((p - centre).dot(u), (p - centre).dot(w));
         (lo, hi) = (lo.min(local), hi.max(local));
     }
     let (lo, hi) = (lo - 0.45, hi + 0.45);
-    let patch: Vec<DVec2> = [(lo.x, lo.y), (hi.x, lo.y), (hi.x, hi.y), (lo.x, hi.y)]
-        .iter()
-        .map(|&(a, b)| pr(centre + a * u + b * w))
-        .collect();
+    let patch: Vec<DVec2> =
+        [(lo.x, lo.y), (hi.x, lo.y), (hi.x, hi.y), (lo.x, hi.y)]
+            .iter()
+            .map(|&(a, b)| pr(centre + a * u + b * w))
+            .collect();
     page.polygon_alpha(
         &patch,
         Some(palette::SKY_BLUE.with_alpha(0.22)),
@@ -228,7 +238,8 @@ fn collinear() -> Figure {
     let p0 = DVec3::ZERO;
     let step = DVec3::new(1.0, 0.5, -0.4);
     let (p1, p2) = (p0 + step, p0 - 1.5 * step);
-    let plane_error = Plane::through(p0, p1, p2).expect_err("collinear points give no plane");
+    let plane_error =
+        Plane::through(p0, p1, p2).expect_err("collinear points give no plane");
     let at = |p: DVec3| DVec2::new(225.0, 265.0) + 85.0 * proj.project(p);
     let dir = step.normalize();
     let (ends0, ends1) = (at(p2 - 0.5 * dir), at(p1 + 0.6 * dir));

@@ -5,12 +5,14 @@
 //! [`ray_plane`], [`edge_function`], [`inside_convex`], [`inside_crossing`]
 //! and [`hit_map`].
 use raystep_figure::numbers::{fixed, signed};
-use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette};
+use raystep_figure::{
+    Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette,
+};
 
 use ch01::rotate90;
 use ch02::{
-    Interval, Plane, Ray, RayPlane, demo_camera, demo_scene, edge_function, hit_map, inside_convex,
-    inside_crossing, ray_plane,
+    Interval, Plane, Ray, RayPlane, demo_camera, demo_scene, edge_function,
+    hit_map, inside_convex, inside_crossing, ray_plane,
 };
 
 /// Every figure of this chapter, in the order the lecture shows them.
@@ -45,7 +47,8 @@ fn v3(p: DVec2) -> DVec3 {
 /// straight up out of the page (it contains the z axis direction), with its
 /// normal on the left of `a → b`.
 fn side_plane(a: DVec2, b: DVec2) -> Plane {
-    Plane::through(v3(a), v3(a) + DVec3::Z, v3(b)).expect("two distinct points and z fix a plane")
+    Plane::through(v3(a), v3(a) + DVec3::Z, v3(b))
+        .expect("two distinct points and z fix a plane")
 }
 
 /// The plane's normal in the side view.
@@ -68,7 +71,8 @@ fn ray_plane_figure() -> Figure {
     let distance = plane.eval(ray.origin);
     let approach = plane.normal.dot(ray.direction);
 
-    let mut page = Page::new(640.0, 420.0).view(DVec2::new(-0.4, -1.0), DVec2::new(7.4, 4.6));
+    let mut page = Page::new(640.0, 420.0)
+        .view(DVec2::new(-0.4, -1.0), DVec2::new(7.4, 4.6));
     // the plane, seen edge-on
     page.segment(a, b, &Stroke::ink().width(2.0));
     page.label(b, "N·P + d = 0", Anchor::W);
@@ -127,7 +131,8 @@ fn ray_plane_figure() -> Figure {
 
 /// Left: a ray parallel to the plane; right: a ray pointing away from it, hit behind its origin.
 fn parallel_and_behind() -> Figure {
-    let mut page = Page::new(960.0, 420.0).view(DVec2::new(0.0, 0.0), DVec2::new(16.0, 7.0));
+    let mut page = Page::new(960.0, 420.0)
+        .view(DVec2::new(0.0, 0.0), DVec2::new(16.0, 7.0));
     page.segment(
         DVec2::new(8.0, 0.2),
         DVec2::new(8.0, 6.8),
@@ -247,7 +252,8 @@ fn inside_test() -> Figure {
     let (q_in, r_in) = (inside_convex(&HOUSE, q), inside_convex(&HOUSE, r));
     assert!(q_in && !r_in, "Q is inside the house, R outside");
     let verdict = |inside: bool| if inside { "inside" } else { "outside" };
-    let mut page = Page::new(640.0, 420.0).view(DVec2::new(-1.6, -0.7), DVec2::new(8.0, 5.4));
+    let mut page = Page::new(640.0, 420.0)
+        .view(DVec2::new(-1.6, -0.7), DVec2::new(8.0, 5.4));
     page.polygon_alpha(
         &HOUSE,
         Some(INSIDE_COLOR.with_alpha(0.12)),
@@ -288,7 +294,8 @@ fn inside_test() -> Figure {
     page.label(q, "Q", Anchor::E);
     page.point(r, palette::BLACK);
     page.label(r, "R", Anchor::N);
-    let mut lines = vec![(format!("Q: every f ≥ 0, {}", verdict(q_in)), INSIDE_COLOR)];
+    let mut lines =
+        vec![(format!("Q: every f ≥ 0, {}", verdict(q_in)), INSIDE_COLOR)];
     for (i, fr) in failing {
         page.label_sized(
             r,
@@ -345,10 +352,12 @@ fn concave() -> Figure {
         DVec2::new(1.8, -1.4),
     ];
     let p = DVec2::new(-1.05, -0.55);
-    let (crossing_says, edge_says) = (inside_crossing(&dart, p), inside_convex(&dart, p));
+    let (crossing_says, edge_says) =
+        (inside_crossing(&dart, p), inside_convex(&dart, p));
     assert!(crossing_says && !edge_says, "the tests disagree at P");
     let verdict = |inside: bool| if inside { "inside" } else { "outside" };
-    let mut page = Page::new(640.0, 420.0).view(DVec2::new(-2.0, -1.6), DVec2::new(5.0, 2.6));
+    let mut page = Page::new(640.0, 420.0)
+        .view(DVec2::new(-2.0, -1.6), DVec2::new(5.0, 2.6));
 
     // What the edge test accepts: the points on the inner side of every edge.
     let mut accepted = vec![
@@ -361,7 +370,8 @@ fn concave() -> Figure {
         let (a, b) = edge(&dart, i);
         accepted = clip_to_inner_side(&accepted, a, b);
     }
-    let centre = accepted.iter().copied().sum::<DVec2>() / accepted.len() as f64;
+    let centre =
+        accepted.iter().copied().sum::<DVec2>() / accepted.len() as f64;
     assert!(
         inside_convex(&dart, centre),
         "the clipped region is what the edge test accepts"
@@ -382,11 +392,20 @@ fn concave() -> Figure {
             let (lo, hi) = if a.y < b.y { (a, b) } else { (b, a) };
             if edge_function(lo, hi, p) > 0.0 {
                 crossings += 1;
-                let c = DVec2::new(lo.x + (p.y - lo.y) / (hi.y - lo.y) * (hi.x - lo.x), p.y);
+                let c = DVec2::new(
+                    lo.x + (p.y - lo.y) / (hi.y - lo.y) * (hi.x - lo.x),
+                    p.y,
+                );
                 page.point(c, OUTSIDE_COLOR);
                 // the number on the side the edge leaves free
                 let anchor = if hi.x > lo.x { Anchor::NW } else { Anchor::NE };
-                page.label_sized(c, &crossings.to_string(), anchor, 16.0, OUTSIDE_COLOR);
+                page.label_sized(
+                    c,
+                    &crossings.to_string(),
+                    anchor,
+                    16.0,
+                    OUTSIDE_COLOR,
+                );
             }
         }
     }
@@ -397,7 +416,8 @@ fn concave() -> Figure {
     // legend and verdicts
     let x = 2.4;
     let swatch = |page: &mut Page, y: f64, color: Color| {
-        let (lo, hi) = (DVec2::new(x, y - 0.14), DVec2::new(x + 0.28, y + 0.14));
+        let (lo, hi) =
+            (DVec2::new(x, y - 0.14), DVec2::new(x + 0.28, y + 0.14));
         page.polygon(
             &[lo, DVec2::new(hi.x, lo.y), hi, DVec2::new(lo.x, hi.y)],
             Some(color),
@@ -450,7 +470,8 @@ fn tie_rule() -> Figure {
         vec![v, rim[4], rim[0]],
     ];
     let names = ["A", "B", "C", "D"];
-    let mut page = Page::new(640.0, 420.0).view(DVec2::new(-4.4, -4.4), DVec2::new(11.0, 4.4));
+    let mut page = Page::new(640.0, 420.0)
+        .view(DVec2::new(-4.4, -4.4), DVec2::new(11.0, 4.4));
     for (k, poly) in fan.iter().enumerate() {
         page.polygon_alpha(
             poly,
@@ -511,17 +532,14 @@ fn tie_rule() -> Figure {
 fn hit_map_figure() -> Figure {
     let (w, h) = (96, 48);
     let map = hit_map(&demo_scene(), &demo_camera(), w, h);
-    let mut page = Page::new(640.0, 420.0).view(DVec2::new(0.0, -9.0), DVec2::new(96.0, 48.0));
-    page.raster(
-        DVec2::ZERO,
-        DVec2::new(96.0, 48.0),
-        w,
-        h,
-        |x, y| match map.get(x, y) {
-            Some(i) => POLYGON_COLORS[i % POLYGON_COLORS.len()],
-            None => palette::LIGHT_GREY,
-        },
-    );
+    let mut page = Page::new(640.0, 420.0)
+        .view(DVec2::new(0.0, -9.0), DVec2::new(96.0, 48.0));
+    page.raster(DVec2::ZERO, DVec2::new(96.0, 48.0), w, h, |x, y| match map
+        .get(x, y)
+    {
+        Some(i) => POLYGON_COLORS[i % POLYGON_COLORS.len()],
+        None => palette::LIGHT_GREY,
+    });
     page.polygon(
         &[
             DVec2::ZERO,

@@ -6,12 +6,17 @@
 use std::path::Path;
 
 use raystep_figure::palette::role;
-use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, SideView, Stroke, palette};
+use raystep_figure::{
+    Anchor, Color, DVec2, DVec3, Figure, Page, SideView, Stroke, palette,
+};
 use raystep_render::RenderOptions;
 
 use raystep_scene::{Scene, Shape as ShapeSpec};
 
-use ch03::{Interval, Ray, ShadingTerms, Terms, World, reflect_light, render, render_with, shade};
+use ch03::{
+    Interval, Ray, ShadingTerms, Terms, World, reflect_light, render,
+    render_with, shade,
+};
 
 /// Every figure of this chapter, in the order the lecture shows them.
 pub fn all() -> Vec<Figure> {
@@ -20,7 +25,8 @@ pub fn all() -> Vec<Figure> {
 
 /// The chapter's scene file, which the side views draw.
 fn spheres_scene() -> Scene {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/spheres.toml");
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/spheres.toml");
     raystep_scene::load(&path).expect("the chapter's scene loads")
 }
 
@@ -37,7 +43,9 @@ fn basic_idea() -> Figure {
     // the middle column of a 10-row image (u = 1/2): its rays lie in the vertical plane of the eye
     let rows = 10;
     let view = SideView::new(camera.eye, camera.forward);
-    debug_assert!(view.off(camera.pixel_ray(0, 0, 1, rows).direction).abs() < 1e-12);
+    debug_assert!(
+        view.off(camera.pixel_ray(0, 0, 1, rows).direction).abs() < 1e-12
+    );
     let eye_at = view.at(camera.eye);
 
     let mut page = Page::new(960.0, 440.0)
@@ -93,7 +101,9 @@ fn basic_idea() -> Figure {
                     .iter()
                     .enumerate()
                     .filter(|&(i, _)| i != object)
-                    .filter_map(|(_, o)| o.shape.intersect(&ray, Interval::FORWARD))
+                    .filter_map(|(_, o)| {
+                        o.shape.intersect(&ray, Interval::FORWARD)
+                    })
                     .map(|h| h.t)
                     .filter(|&t| {
                         let q = view.at(ray.at(t));
@@ -119,7 +129,9 @@ fn basic_idea() -> Figure {
                     Some(&Stroke::new(palette::BLACK).width(1.5)),
                 );
             }
-            None => page.ray(from, dir, &Stroke::new(role::RAY).width(1.5).dashed()),
+            None => {
+                page.ray(from, dir, &Stroke::new(role::RAY).width(1.5).dashed())
+            }
         }
     }
     assert!(0 < hits && hits < rows, "some rays hit, some miss");
@@ -129,9 +141,13 @@ fn basic_idea() -> Figure {
     let up = view.dir(camera.up) * camera.half_height;
     let depth = view.dir(camera.forward) * 0.14;
     for row in 0..rows {
-        let edge = |k: u32| centre + (1.0 - 2.0 * f64::from(k) / f64::from(rows)) * up;
+        let edge =
+            |k: u32| centre + (1.0 - 2.0 * f64::from(k) / f64::from(rows)) * up;
         let (top, bottom) = (edge(row), edge(row + 1));
-        let pixel = Color::from_linear(ch03::trace(&world, &camera.pixel_ray(0, row, 1, rows)));
+        let pixel = Color::from_linear(ch03::trace(
+            &world,
+            &camera.pixel_ray(0, row, 1, rows),
+        ));
         page.polygon(
             &[top, bottom, bottom + depth, top + depth],
             Some(pixel),
@@ -192,7 +208,8 @@ fn vectors() -> Figure {
     let (n2, l2, r2, v2) = (flat(n), flat(l), flat(r), flat(v));
     assert!((r.dot(n) - l.dot(n)).abs() < 1e-12, "R is at θ to N");
 
-    let mut page = Page::new(640.0, 380.0).view(DVec2::new(-2.4, -0.3), DVec2::new(2.4, 2.5));
+    let mut page = Page::new(640.0, 380.0)
+        .view(DVec2::new(-2.4, -0.3), DVec2::new(2.4, 2.5));
     let p = DVec2::ZERO;
     // the surface, hatched below
     page.segment(
@@ -300,7 +317,8 @@ fn other_rays() -> Figure {
         Anchor::N,
     );
     let reflected = reflect_light(-ray.direction, n);
-    let refracted = refract(ray.direction, n, 1.5).expect("entering glass refracts");
+    let refracted =
+        refract(ray.direction, n, 1.5).expect("entering glass refracts");
     let len = 2.4;
     let tip = p + len * view.dir(reflected);
     page.arrow(p, tip, &Stroke::vector(role::REFLECTED));
@@ -338,10 +356,14 @@ fn other_rays() -> Figure {
             1.0
         };
         let plane = SideView::new(hit.point, to_light);
-        let at =
-            |x: DVec3| q + DVec2::new(side, 1.0) * (plane.at(x) - DVec2::new(0.0, hit.point.y));
+        let at = |x: DVec3| {
+            q + DVec2::new(side, 1.0)
+                * (plane.at(x) - DVec2::new(0.0, hit.point.y))
+        };
         let at_light = at(light.position);
-        match world.closest_hit(&shadow, Interval::new(1e-9 * distance, distance)) {
+        match world
+            .closest_hit(&shadow, Interval::new(1e-9 * distance, distance))
+        {
             None => {
                 page.segment(q, at_light, &Stroke::new(role::LIGHT).width(2.0));
                 page.label(
@@ -353,7 +375,9 @@ fn other_rays() -> Figure {
             Some((by, block)) => {
                 blocked_lights += 1;
                 let at_block = at(block.point);
-                if let ShapeSpec::Sphere { center, radius } = &scene.objects[by].shape {
+                if let ShapeSpec::Sphere { center, radius } =
+                    &scene.objects[by].shape
+                {
                     // the blocker where the vertical plane cuts it
                     let off = plane.off(*center);
                     let fill = Color::from_linear(world.material_of(by).kd);
@@ -418,12 +442,15 @@ fn terms() -> Figure {
         })
         .expect("a small render")
     };
-    let ambient = render(&world, Terms::Ambient, &RenderOptions::QUIET).expect("a small render");
+    let ambient = render(&world, Terms::Ambient, &RenderOptions::QUIET)
+        .expect("a small render");
     let diffuse = term(|t| t.diffuse);
     let specular = term(|t| t.specular);
-    let sum = render(&world, Terms::All, &RenderOptions::QUIET).expect("a small render");
+    let sum = render(&world, Terms::All, &RenderOptions::QUIET)
+        .expect("a small render");
     for (i, &l) in sum.pixels().iter().enumerate() {
-        let parts = ambient.pixels()[i] + diffuse.pixels()[i] + specular.pixels()[i];
+        let parts =
+            ambient.pixels()[i] + diffuse.pixels()[i] + specular.pixels()[i];
         assert!(
             (parts - l).abs().max_element() < 1e-12,
             "L is the sum of its terms"
@@ -437,10 +464,12 @@ fn terms() -> Figure {
     ];
     let (pw, ph) = (f64::from(world.width), f64::from(world.height));
     let (gap, side, bottom) = (32.0, 12.0, 56.0);
-    let mut page = Page::new(4.0 * pw + 3.0 * gap + 2.0 * side, ph + bottom + 12.0);
+    let mut page =
+        Page::new(4.0 * pw + 3.0 * gap + 2.0 * side, ph + bottom + 12.0);
     for (k, (image, name, formula)) in panels.iter().enumerate() {
         let x = side + k as f64 * (pw + gap);
-        let (min, max) = (DVec2::new(x, bottom), DVec2::new(x + pw, bottom + ph));
+        let (min, max) =
+            (DVec2::new(x, bottom), DVec2::new(x + pw, bottom + ph));
         page.image(min, max, image.width(), image.height(), &image.to_srgb8());
         page.label(DVec2::new(x + pw / 2.0, bottom), name, Anchor::S);
         page.label(DVec2::new(x + pw / 2.0, bottom - 22.0), formula, Anchor::S);
@@ -495,8 +524,10 @@ material = "shiny"
 
 /// The highlight of one sphere as the Phong exponent p grows.
 fn exponent() -> Figure {
-    let scene = raystep_scene::parse(SHINY, "shiny.toml").expect("the sweep's scene parses");
-    let world = ch03::world(&scene, "shiny.toml").expect("the sweep's scene builds");
+    let scene = raystep_scene::parse(SHINY, "shiny.toml")
+        .expect("the sweep's scene parses");
+    let world =
+        ch03::world(&scene, "shiny.toml").expect("the sweep's scene builds");
     let exponents = [2.0, 8.0, 32.0, 128.0, 512.0];
     let (w, h) = (world.width, world.height);
     let gap = 16.0;
@@ -508,7 +539,8 @@ fn exponent() -> Figure {
         for m in &mut world.materials {
             m.p = p;
         }
-        let image = render(&world, Terms::All, &RenderOptions::QUIET).expect("a small render");
+        let image = render(&world, Terms::All, &RenderOptions::QUIET)
+            .expect("a small render");
         let x = 12.0 + k as f64 * (pw + gap);
         page.image(
             DVec2::new(x, 36.0),

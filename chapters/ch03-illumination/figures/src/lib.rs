@@ -21,7 +21,11 @@ pub const CHAPTER: Chapter = Chapter {
 
 /// `raystep render` with chapter 03's tracer: the local model, every light
 /// visible.
-fn render(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
+fn render(
+    scene: &Scene,
+    file: &str,
+    options: &RenderOptions,
+) -> Result<Image, String> {
     let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
     ch03::render(&world, ch03::Terms::All, options).map_err(|e| e.to_string())
 }

@@ -43,10 +43,15 @@ fn wrong(row: &AcneRow) -> f64 {
     (row.acne + row.leaks).max(FLOOR)
 }
 
-fn draw(area: &raystep_figure::ChartArea, rows: &[AcneRow]) -> Result<(), ChartError> {
+fn draw(
+    area: &raystep_figure::ChartArea,
+    rows: &[AcneRow],
+) -> Result<(), ChartError> {
     // a legend strip across the top, then the two panels
     let (legend, panels) = area.split_vertically(34);
-    for (i, ((name, _), colour)) in CHART_STRATEGIES.iter().zip(COLOURS).enumerate() {
+    for (i, ((name, _), colour)) in
+        CHART_STRATEGIES.iter().zip(COLOURS).enumerate()
+    {
         let x = 90 + 160 * i as i32;
         legend.draw(&PathElement::new(
             vec![(x, 20), (x + 24, 20)],
@@ -57,7 +62,8 @@ fn draw(area: &raystep_figure::ChartArea, rows: &[AcneRow]) -> Result<(), ChartE
     let (left, right) = panels.split_horizontally(470);
     let label_style = ("sans-serif", 15);
     let max_ms = rows.iter().map(|r| r.millis).fold(0.0, f64::max) * 1.1;
-    let min_ms = rows.iter().map(|r| r.millis).fold(f64::INFINITY, f64::min) * 0.9;
+    let min_ms =
+        rows.iter().map(|r| r.millis).fold(f64::INFINITY, f64::min) * 0.9;
 
     // Left: wrong pixels by scale, one line per strategy.
     let mut by_scale = ChartBuilder::on(&left)
@@ -65,7 +71,10 @@ fn draw(area: &raystep_figure::ChartArea, rows: &[AcneRow]) -> Result<(), ChartE
         .margin(10)
         .x_label_area_size(34)
         .y_label_area_size(56)
-        .build_cartesian_2d((1e-3f64..1e4f64).log_scale(), (FLOOR..1f64).log_scale())?;
+        .build_cartesian_2d(
+            (1e-3f64..1e4f64).log_scale(),
+            (FLOOR..1f64).log_scale(),
+        )?;
     by_scale
         .configure_mesh()
         .x_desc("scale")
@@ -81,7 +90,10 @@ fn draw(area: &raystep_figure::ChartArea, rows: &[AcneRow]) -> Result<(), ChartE
             .filter(|r| r.strategy == *name)
             .map(|r| (r.scale, wrong(r)))
             .collect();
-        by_scale.draw_series(LineSeries::new(points.clone(), colour.stroke_width(2)))?;
+        by_scale.draw_series(LineSeries::new(
+            points.clone(),
+            colour.stroke_width(2),
+        ))?;
         by_scale.draw_series(
             points
                 .into_iter()

@@ -8,12 +8,15 @@
 //! of wrong pixels from [`shadow_errors`].
 use raystep_figure::numbers::{power, power_text};
 use raystep_figure::palette::role;
-use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette};
+use raystep_figure::{
+    Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette,
+};
 use raystep_render::{Image, RenderOptions};
 
 use ch04::{
-    INT_SCALE, Interval, ORIGIN, Offset, TWO_LIGHTS_SCENE, Verdict, World, occluded,
-    offset_scale_aware, render, scaled_scene, shadow, shadow_errors, shadow_ray, verdict,
+    INT_SCALE, Interval, ORIGIN, Offset, TWO_LIGHTS_SCENE, Verdict, World,
+    occluded, offset_scale_aware, render, scaled_scene, shadow, shadow_errors,
+    shadow_ray, verdict,
 };
 
 /// Every figure of this chapter, in the order the lecture shows them.
@@ -29,7 +32,8 @@ const LIFT_COLOR: Color = palette::PURPLE;
 
 /// The shapes of scene-file text, as the file gives them.
 fn shapes_of(text: &str, name: &str) -> Vec<raystep_scene::Shape> {
-    let scene = raystep_scene::parse(text, name).expect("the figure's scene parses");
+    let scene =
+        raystep_scene::parse(text, name).expect("the figure's scene parses");
     scene.objects.into_iter().map(|o| o.shape).collect()
 }
 
@@ -77,7 +81,8 @@ material = "any"
 /// One surface point, two lights, two shadow rays: one reaches its light,
 /// the other is blocked by the ball.
 fn shadow_rays() -> Figure {
-    let world = ch03::parse(SIDE_SCENE, "side.toml").expect("the figure\'s scene builds");
+    let world = ch03::parse(SIDE_SCENE, "side.toml")
+        .expect("the figure\'s scene builds");
     let point = DVec3::ZERO;
     let normal = DVec3::Y;
     let hit = ch04::Hit {
@@ -86,13 +91,15 @@ fn shadow_rays() -> Figure {
         normal,
     };
     let v2 = |p: DVec3| p.truncate();
-    let raystep_scene::Shape::Sphere { center, radius } = shapes_of(SIDE_SCENE, "side.toml")[0]
+    let raystep_scene::Shape::Sphere { center, radius } =
+        shapes_of(SIDE_SCENE, "side.toml")[0]
     else {
         panic!("the first object is the ball");
     };
     let (centre, radius) = (v2(center), radius);
 
-    let mut page = Page::new(720.0, 440.0).view(DVec2::new(-4.6, -0.7), DVec2::new(4.9, 5.5));
+    let mut page = Page::new(720.0, 440.0)
+        .view(DVec2::new(-4.6, -0.7), DVec2::new(4.9, 5.5));
     // the floor, seen edge-on
     let floor_fill = palette::LIGHT_GREY.mix(palette::WHITE, 0.5);
     page.rect(
@@ -122,7 +129,8 @@ fn shadow_rays() -> Figure {
 
     let mut lines = Vec::new();
     for (i, light) in world.lights.iter().enumerate() {
-        let (ray, interval) = shadow_ray(point, normal, light.position, Offset::ScaleAware);
+        let (ray, interval) =
+            shadow_ray(point, normal, light.position, Offset::ScaleAware);
         let blocked = occluded(&world, &ray, interval);
         let s = shadow(&world, &hit, normal, light, Offset::ScaleAware);
         assert_eq!(
@@ -139,7 +147,11 @@ fn shadow_rays() -> Figure {
                 .expect("a blocked ray hits something");
             let at = v2(blocker.point);
             page.segment(v2(point), at, &Stroke::new(role::BLOCKED).width(2.5));
-            page.segment(at, to, &Stroke::new(role::BLOCKED).width(2.0).dashed());
+            page.segment(
+                at,
+                to,
+                &Stroke::new(role::BLOCKED).width(2.0).dashed(),
+            );
             page.circle(
                 at,
                 5.5 / page.scale(),
@@ -218,9 +230,10 @@ fn error_map(world: &World, offset: Offset) -> Vec<Verdict> {
     let mut map = Vec::with_capacity((world.width * world.height) as usize);
     for row in 0..world.height {
         for column in 0..world.width {
-            let ray = world
-                .camera
-                .pixel_ray(column, row, world.width, world.height);
+            let ray =
+                world
+                    .camera
+                    .pixel_ray(column, row, world.width, world.height);
             map.push(verdict(world, &ray, light, offset));
         }
     }
@@ -262,7 +275,8 @@ fn acne() -> Figure {
     let render_y = bottom + ph + mid; // bottom of the renders
     for (k, &(name, why, offset, scale)) in panels.iter().enumerate() {
         let world = acne_world(scale, w, h);
-        let image = render(&world, offset, &RenderOptions::QUIET).expect("a small render");
+        let image = render(&world, offset, &RenderOptions::QUIET)
+            .expect("a small render");
         let map = error_map(&world, offset);
         let errors = shadow_errors(&world, offset);
         let x = side + k as f64 * (pw + gap);
@@ -324,8 +338,12 @@ fn acne() -> Figure {
                 let e = shadow_errors(&acne_world(s, w, h), offset);
                 e.acne + e.leaks == 0
             });
-            assert!(all_clean, "the scale-aware offset is right at every scale");
-            let scales = format!("scales {}, 1 and {}", power(tiny), power(huge));
+            assert!(
+                all_clean,
+                "the scale-aware offset is right at every scale"
+            );
+            let scales =
+                format!("scales {}, 1 and {}", power(tiny), power(huge));
             page.text_lines(
                 DVec2::new(x, map_y - 14.0),
                 17.0,
@@ -337,7 +355,8 @@ fn acne() -> Figure {
             );
         } else {
             let acne_line = format!("acne {}", percent(errors.acne_fraction()));
-            let leak_line = format!("leaks {}", percent(errors.leak_fraction()));
+            let leak_line =
+                format!("leaks {}", percent(errors.leak_fraction()));
             let mut lines = vec![
                 (acne_line.as_str(), ACNE_COLOR),
                 (leak_line.as_str(), LEAK_COLOR),
@@ -373,11 +392,12 @@ fn acne() -> Figure {
 /// `scenes/two-lights.toml` rendered with shadows, each light's shadow of
 /// the big sphere labelled.
 fn two_lights() -> Figure {
-    let mut world =
-        ch03::parse(TWO_LIGHTS_SCENE, "two-lights.toml").expect("the figure\'s scene builds");
+    let mut world = ch03::parse(TWO_LIGHTS_SCENE, "two-lights.toml")
+        .expect("the figure\'s scene builds");
     (world.width, world.height) = (480, 270);
     let (w, h) = (world.width, world.height);
-    let image = render(&world, Offset::ScaleAware, &RenderOptions::QUIET).expect("a small render");
+    let image = render(&world, Offset::ScaleAware, &RenderOptions::QUIET)
+        .expect("a small render");
     assert_eq!(world.lights.len(), 2, "two lights");
     let red = &world.objects[0];
     let shapes = shapes_of(TWO_LIGHTS_SCENE, "two-lights.toml");
@@ -388,7 +408,9 @@ fn two_lights() -> Figure {
     for row in 0..h {
         for column in 0..w {
             let ray = world.camera.pixel_ray(column, row, w, h);
-            let Some((object, hit)) = world.closest_hit(&ray, Interval::FORWARD) else {
+            let Some((object, hit)) =
+                world.closest_hit(&ray, Interval::FORWARD)
+            else {
                 continue;
             };
             if !matches!(shapes[object], raystep_scene::Shape::Plane { .. }) {
@@ -396,22 +418,31 @@ fn two_lights() -> Figure {
             }
             let normal = hit.normal * -hit.normal.dot(ray.direction).signum();
             let by_red = |light: &ch04::Light| {
-                let (ray, interval) =
-                    shadow_ray(hit.point, normal, light.position, Offset::ScaleAware);
+                let (ray, interval) = shadow_ray(
+                    hit.point,
+                    normal,
+                    light.position,
+                    Offset::ScaleAware,
+                );
                 red.shape.intersect(&ray, interval).is_some()
             };
             let s: Vec<f64> = world
                 .lights
                 .iter()
-                .map(|light| shadow(&world, &hit, normal, light, Offset::ScaleAware))
+                .map(|light| {
+                    shadow(&world, &hit, normal, light, Offset::ScaleAware)
+                })
                 .collect();
-            let red_blocks: Vec<bool> = world.lights.iter().map(by_red).collect();
+            let red_blocks: Vec<bool> =
+                world.lights.iter().map(by_red).collect();
             let at = DVec2::new(f64::from(column) + 0.5, f64::from(row) + 0.5);
             let lit = [s[0] == 1.0, s[1] == 1.0];
             match lit {
                 [false, true] if red_blocks[0] => groups[0].push(at),
                 [true, false] if red_blocks[1] => groups[1].push(at),
-                [false, false] if red_blocks[0] && red_blocks[1] => groups[2].push(at),
+                [false, false] if red_blocks[0] && red_blocks[1] => {
+                    groups[2].push(at)
+                }
                 _ => {}
             }
         }
@@ -423,7 +454,9 @@ fn two_lights() -> Figure {
         group
             .iter()
             .copied()
-            .min_by(|a, b| (*a - mean).length().total_cmp(&(*b - mean).length()))
+            .min_by(|a, b| {
+                (*a - mean).length().total_cmp(&(*b - mean).length())
+            })
             .expect("not empty")
     };
 
@@ -445,26 +478,29 @@ fn two_lights() -> Figure {
         .map(|l| Color::from_linear(l.intensity).mix(palette::BLACK, 0.5))
         .collect();
     let ink = Stroke::new(palette::BLACK).width(2.0);
-    let note =
-        |page: &mut Page, target: DVec2, at: DVec2, anchor: Anchor, lines: [(String, Color); 2]| {
-            page.arrow(at, target, &ink);
-            // a white ring keeps the tip visible on a dark shadow
-            page.circle(target, 3.0, Some(palette::WHITE), Some(&ink.thin()));
-            page.label_sized(
-                at + DVec2::new(0.0, 10.0),
-                &lines[0].0,
-                anchor,
-                16.0,
-                lines[0].1,
-            );
-            page.label_sized(
-                at - DVec2::new(0.0, 10.0),
-                &lines[1].0,
-                anchor,
-                16.0,
-                lines[1].1,
-            );
-        };
+    let note = |page: &mut Page,
+                target: DVec2,
+                at: DVec2,
+                anchor: Anchor,
+                lines: [(String, Color); 2]| {
+        page.arrow(at, target, &ink);
+        // a white ring keeps the tip visible on a dark shadow
+        page.circle(target, 3.0, Some(palette::WHITE), Some(&ink.thin()));
+        page.label_sized(
+            at + DVec2::new(0.0, 10.0),
+            &lines[0].0,
+            anchor,
+            16.0,
+            lines[0].1,
+        );
+        page.label_sized(
+            at - DVec2::new(0.0, 10.0),
+            &lines[1].0,
+            anchor,
+            16.0,
+            lines[1].1,
+        );
+    };
     // each light's shadow falls on the far side of the sphere from it
     for (i, group) in groups.iter().enumerate().take(2) {
         let target = on_page(centre_of(group));
@@ -502,7 +538,10 @@ fn two_lights() -> Figure {
         let p = light.position;
         let left_side = p.x < 0.0;
         page.label_sized(
-            DVec2::new(if left_side { left } else { left + pw }, bottom + ph + 8.0),
+            DVec2::new(
+                if left_side { left } else { left + pw },
+                bottom + ph + 8.0,
+            ),
             &format!(
                 "light {} at ({}, {}, {})",
                 i + 1,
@@ -566,7 +605,8 @@ fn offsets() -> Figure {
         ("ScaleAware", Offset::ScaleAware),
     ];
 
-    let mut page = Page::new(1000.0, 620.0).view(DVec2::new(0.0, -0.7), DVec2::new(20.0, 11.2));
+    let mut page = Page::new(1000.0, 620.0)
+        .view(DVec2::new(0.0, -0.7), DVec2::new(20.0, 11.2));
     // the magnified drawing: surface at 0, blocker at 1, P 0.4 below
     let (drawn_blocker, drawn_p) = (1.0, -0.55);
     let dir = DVec2::new(0.42, 1.0).normalize();
@@ -581,7 +621,8 @@ fn offsets() -> Figure {
         let re_hit = surface.intersect(&ray, interval);
         let found = blocker.intersect(&ray, interval).is_some();
         // where the ray meets the blocker, if anywhere ahead of its origin
-        let blocker_t = blocker.intersect(&ray, Interval::FORWARD).map(|hit| hit.t);
+        let blocker_t =
+            blocker.intersect(&ray, Interval::FORWARD).map(|hit| hit.t);
         let lift = ray.origin.y - 1.0; // height of the origin above the surface
 
         if k > 0 {
@@ -626,7 +667,11 @@ fn offsets() -> Figure {
             Offset::TMin(eps) if eps > 0.0 => {
                 // the ignored first ε of the ray
                 let skip = cross(drawn_blocker + 0.55);
-                page.segment(o, skip, &Stroke::new(palette::LIGHT_GREY).width(9.0));
+                page.segment(
+                    o,
+                    skip,
+                    &Stroke::new(palette::LIGHT_GREY).width(9.0),
+                );
                 page.segment(o, skip, &ray_stroke.dashed());
                 page.arrow(skip, end, &ray_stroke);
                 page.hollow_point(cross(0.0), palette::BLACK);
@@ -667,7 +712,8 @@ fn offsets() -> Figure {
             page.arrow(p, o, &Stroke::new(LIFT_COLOR).width(2.0));
             if offset == Offset::ScaleAware {
                 for step in 1..7 {
-                    let y = drawn_p + f64::from(step) * (origin_y - drawn_p) / 7.0;
+                    let y =
+                        drawn_p + f64::from(step) * (origin_y - drawn_p) / 7.0;
                     page.segment(
                         at(px - 0.1, y),
                         at(px + 0.1, y),
@@ -682,7 +728,13 @@ fn offsets() -> Figure {
                     LIFT_COLOR,
                 );
             } else {
-                page.label_sized(at(px, 0.7), "ε·N", Anchor::W, 14.0, LIFT_COLOR);
+                page.label_sized(
+                    at(px, 0.7),
+                    "ε·N",
+                    Anchor::W,
+                    14.0,
+                    LIFT_COLOR,
+                );
             }
         }
         page.point(p, palette::BLACK);
@@ -692,7 +744,9 @@ fn offsets() -> Figure {
         let mut lines: Vec<(String, Color)> = vec![(
             match offset {
                 Offset::TMin(0.0) => "starts at P, counts t ≥ 0".to_string(),
-                Offset::TMin(eps) => format!("starts at P, skips t < {}", power(eps)),
+                Offset::TMin(eps) => {
+                    format!("starts at P, skips t < {}", power(eps))
+                }
                 _ => format!("starts {} above", power(lift)),
             },
             palette::BLACK,
@@ -702,20 +756,26 @@ fn offsets() -> Figure {
                 lines.push(("hits its own surface at".to_string(), ACNE_COLOR));
                 lines.push((format!("t = {}: acne", power(hit.t)), ACNE_COLOR));
             }
-            None => lines.push(("misses its own surface".to_string(), palette::BLACK)),
+            None => lines
+                .push(("misses its own surface".to_string(), palette::BLACK)),
         }
         match (found, blocker_t) {
-            (true, _) => lines.push(("finds the blocker: S = 0".to_string(), palette::BLACK)),
+            (true, _) => lines
+                .push(("finds the blocker: S = 0".to_string(), palette::BLACK)),
             (false, Some(t)) => {
                 lines.push(("skips the blocker at".to_string(), LEAK_COLOR));
                 lines.push((format!("t = {} < ε: leak", power(t)), LEAK_COLOR));
             }
             (false, None) => {
-                lines.push(("starts above the blocker:".to_string(), LEAK_COLOR));
+                lines.push((
+                    "starts above the blocker:".to_string(),
+                    LEAK_COLOR,
+                ));
                 lines.push(("leak".to_string(), LEAK_COLOR));
             }
         }
-        let lines: Vec<(&str, Color)> = lines.iter().map(|(t, c)| (t.as_str(), *c)).collect();
+        let lines: Vec<(&str, Color)> =
+            lines.iter().map(|(t, c)| (t.as_str(), *c)).collect();
         page.text_lines(at(-2.3, -1.25), 0.4, 15.0, &lines);
         if k == 0 {
             page.label_sized(
@@ -790,7 +850,13 @@ fn offsets() -> Figure {
         } else {
             format!("{x}")
         };
-        page.label_sized(ax(x) - up(0.25), &text, Anchor::S, 14.0, palette::BLACK);
+        page.label_sized(
+            ax(x) - up(0.25),
+            &text,
+            Anchor::S,
+            14.0,
+            palette::BLACK,
+        );
     }
     // a lift of 2 ulps from a few points, and the fixed step near 0
     for x in [1.25, 2.5, 5.0] {
@@ -822,7 +888,8 @@ fn offsets() -> Figure {
         LIFT_COLOR,
     );
     // the real f64 lifts, from offset_scale_aware (only x moves: N = +x)
-    let lift = |x: f64| offset_scale_aware(DVec3::new(x, 0.5, 0.5), DVec3::X).x - x;
+    let lift =
+        |x: f64| offset_scale_aware(DVec3::new(x, 0.5, 0.5), DVec3::X).x - x;
     let lines = [
         format!(
             "drawn: 3 bits after the point and a lift of 2 ulps; f64 has 52 bits and lifts INT\\_SCALE = {INT_SCALE} ulps:"
@@ -835,7 +902,8 @@ fn offsets() -> Figure {
             power(lift(0.01))
         ),
     ];
-    let lines: Vec<(&str, Color)> = lines.iter().map(|l| (l.as_str(), palette::BLACK)).collect();
+    let lines: Vec<(&str, Color)> =
+        lines.iter().map(|l| (l.as_str(), palette::BLACK)).collect();
     page.text_lines(DVec2::new(x0 - 0.3, axis_y - 0.95), 0.42, 15.0, &lines);
     Figure::new(
         "offsets",

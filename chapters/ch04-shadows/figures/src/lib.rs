@@ -21,15 +21,25 @@ pub const CHAPTER: Chapter = Chapter {
     measurements: &[Measurement {
         what: "ch04 acne",
         file: "acne.csv",
-        steps: |_| (measurements::CHART_STRATEGIES.len() * measurements::CHART_SCALES.len()) as u64,
-        run: |repeats, step| Ok(to_csv(&measurements::measure_acne(repeats, step))),
+        steps: |_| {
+            (measurements::CHART_STRATEGIES.len()
+                * measurements::CHART_SCALES.len()) as u64
+        },
+        run: |repeats, step| {
+            Ok(to_csv(&measurements::measure_acne(repeats, step)))
+        },
     }],
     renderer: Some(render),
 };
 
 /// `raystep render` with chapter 04's tracer: shadow rays, with the
 /// scale-aware offset against acne.
-fn render(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
+fn render(
+    scene: &Scene,
+    file: &str,
+    options: &RenderOptions,
+) -> Result<Image, String> {
     let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
-    ch04::render(&world, ch04::Offset::ScaleAware, options).map_err(|e| e.to_string())
+    ch04::render(&world, ch04::Offset::ScaleAware, options)
+        .map_err(|e| e.to_string())
 }

@@ -73,9 +73,11 @@ pub fn measure_acne(rounds: usize, mut step: impl FnMut()) -> Vec<AcneRow> {
                 }) as Box<dyn FnMut() + '_>
             })
             .collect();
-        let mut jobs: Vec<&mut dyn FnMut()> = jobs.iter_mut().map(|j| &mut **j as _).collect();
+        let mut jobs: Vec<&mut dyn FnMut()> =
+            jobs.iter_mut().map(|j| &mut **j as _).collect();
         let times = TIMING.with_rounds(rounds).median_ms(&mut jobs, || ());
-        for ((name, offset), millis) in CHART_STRATEGIES.into_iter().zip(times) {
+        for ((name, offset), millis) in CHART_STRATEGIES.into_iter().zip(times)
+        {
             let errors = shadow_errors(world, offset);
             rows.push(AcneRow {
                 strategy: name.to_string(),
@@ -88,7 +90,8 @@ pub fn measure_acne(rounds: usize, mut step: impl FnMut()) -> Vec<AcneRow> {
         step();
     }
     // strategy by strategy, as the chart and the CSV list them
-    let order = |name: &str| CHART_STRATEGIES.iter().position(|(n, _)| *n == name);
+    let order =
+        |name: &str| CHART_STRATEGIES.iter().position(|(n, _)| *n == name);
     rows.sort_by_key(|r| order(&r.strategy));
     rows
 }

@@ -6,7 +6,9 @@ use raystep_figure::plotters::prelude::*;
 use raystep_figure::plotters::style::text_anchor::{HPos, Pos, VPos};
 use raystep_figure::{ChartError, Figure, chart, measured};
 
-use crate::measurements::{CHART_SCENES, CONTRIBUTION_RULE, DEPTH_RULE, StopRow};
+use crate::measurements::{
+    CHART_SCENES, CONTRIBUTION_RULE, DEPTH_RULE, StopRow,
+};
 
 /// Errors below this are drawn at the chart's floor (log axes have no 0).
 const FLOOR: f64 = 0.01;
@@ -53,7 +55,8 @@ impl Metric {
 }
 
 /// The depths labelled on the chart (the others would crowd).
-const LABELLED_DEPTHS: [f64; 9] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 10.0, 18.0, 32.0];
+const LABELLED_DEPTHS: [f64; 9] =
+    [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 10.0, 18.0, 32.0];
 
 /// A point's label: the depth, or the threshold as a power of ten.
 fn parameter_label(row: &StopRow) -> String {
@@ -64,7 +67,10 @@ fn parameter_label(row: &StopRow) -> String {
     }
 }
 
-fn draw(area: &raystep_figure::ChartArea, rows: &[StopRow]) -> Result<(), ChartError> {
+fn draw(
+    area: &raystep_figure::ChartArea,
+    rows: &[StopRow],
+) -> Result<(), ChartError> {
     // a legend strip across the top, then the RMSE above the max error,
     // one column per scene
     let (legend, panels) = area.split_vertically(34);
@@ -86,7 +92,8 @@ fn draw(area: &raystep_figure::ChartArea, rows: &[StopRow]) -> Result<(), ChartE
     let panels = panels.split_evenly((2, 2));
     for (row, metric) in [Metric::Rmse, Metric::Max].into_iter().enumerate() {
         for (column, (scene, _)) in CHART_SCENES.iter().enumerate() {
-            let of_scene: Vec<&StopRow> = rows.iter().filter(|r| r.scene == *scene).collect();
+            let of_scene: Vec<&StopRow> =
+                rows.iter().filter(|r| r.scene == *scene).collect();
             panel(&panels[2 * row + column], scene, &of_scene, metric)?;
         }
     }
@@ -103,14 +110,18 @@ fn panel(
     let label_style = ("sans-serif", 14);
     // from a little below the fastest render; room on the right for the
     // thresholds' labels
-    let min_ms = of_scene.iter().map(|r| r.millis).fold(f64::MAX, f64::min) * 0.85;
+    let min_ms =
+        of_scene.iter().map(|r| r.millis).fold(f64::MAX, f64::min) * 0.85;
     let max_ms = of_scene.iter().map(|r| r.millis).fold(0.0, f64::max) * 1.15;
     let mut c = ChartBuilder::on(area)
         .caption(format!("{scene}.toml"), ("sans-serif", 17))
         .margin(10)
         .x_label_area_size(34)
         .y_label_area_size(52)
-        .build_cartesian_2d(min_ms..max_ms, (0.8 * FLOOR..300f64).log_scale())?;
+        .build_cartesian_2d(
+            min_ms..max_ms,
+            (0.8 * FLOOR..300f64).log_scale(),
+        )?;
     c.configure_mesh()
         .x_desc("render time, ms (160×90, one thread, this machine)")
         .y_desc(metric.axis())
@@ -156,17 +167,22 @@ fn panel(
             .copied()
             .filter(|r| r.rule == rule)
             .collect();
-        for group in
-            rows.chunk_by(|a, b| a.secondary == b.secondary && metric.of(a) == metric.of(b))
-        {
+        for group in rows.chunk_by(|a, b| {
+            a.secondary == b.secondary && metric.of(a) == metric.of(b)
+        }) {
             let (first, last) = (group[0], group[group.len() - 1]);
-            if rule == DEPTH_RULE && !LABELLED_DEPTHS.contains(&first.parameter) {
+            if rule == DEPTH_RULE && !LABELLED_DEPTHS.contains(&first.parameter)
+            {
                 continue;
             }
             let text = if group.len() == 1 {
                 parameter_label(first)
             } else {
-                format!("{} … {}", parameter_label(first), parameter_label(last))
+                format!(
+                    "{} … {}",
+                    parameter_label(first),
+                    parameter_label(last)
+                )
             };
             let side = if rule == DEPTH_RULE {
                 HPos::Right

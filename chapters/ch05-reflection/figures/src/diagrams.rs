@@ -6,12 +6,15 @@
 //! errors from [`render`] and [`image_error`].
 use raystep_figure::numbers::fixed;
 use raystep_figure::palette::role;
-use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette};
+use raystep_figure::{
+    Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, palette,
+};
 use raystep_render::{RenderOptions, image_error};
 
 use crate::measurements::{REFERENCE, chart_world};
 use ch05::{
-    Cut, DEFAULT_STOP, Interval, LoggedRay, Ray, Stop, World, pixel_tree, reflect_ray, render,
+    Cut, DEFAULT_STOP, Interval, LoggedRay, Ray, Stop, World, pixel_tree,
+    reflect_ray, render,
 };
 
 /// Every figure of this chapter, in the order the lecture shows them.
@@ -73,7 +76,8 @@ fn reflection() -> Figure {
     let normal_part = flat(dn * n);
     let kept = d2 - normal_part;
 
-    let mut page = Page::new(960.0, 400.0).view(DVec2::new(-2.5, -1.45), DVec2::new(7.7, 2.5));
+    let mut page = Page::new(960.0, 400.0)
+        .view(DVec2::new(-2.5, -1.45), DVec2::new(7.7, 2.5));
     let thin = Stroke::new(palette::BLACK).width(1.2);
     let len = 1.8;
 
@@ -264,7 +268,13 @@ fn ray_tree() -> Figure {
             Some(palette::LIGHT_GREY.mix(palette::WHITE, 0.4)),
             None,
         );
-        page.label_sized(at(DVec3::ZERO), "ball", Anchor::Center, 13.0, palette::GREY);
+        page.label_sized(
+            at(DVec3::ZERO),
+            "ball",
+            Anchor::Center,
+            13.0,
+            palette::GREY,
+        );
         // the shadow rays: thin branches toward the light (the caption
         // says they all reach it)
         assert!(
@@ -275,7 +285,10 @@ fn ray_tree() -> Figure {
             let t = ray.t.expect("a shadow ray ends at its light");
             let blocker = ray.blocked.then(|| {
                 world
-                    .closest_hit(&Ray::new(ray.origin, ray.direction), Interval::new(0.0, t))
+                    .closest_hit(
+                        &Ray::new(ray.origin, ray.direction),
+                        Interval::new(0.0, t),
+                    )
                     .expect("a blocked shadow ray hits something")
                     .1
                     .point
@@ -330,7 +343,12 @@ fn ray_tree() -> Figure {
 
 /// The traced rays of a pixel's tree under `stop` (not the shadow rays),
 /// each numbered by its depth where it ends, and the cut ray with an X.
-fn draw_rays(page: &mut Page, rays: &[LoggedRay], stop: &Stop, at: &dyn Fn(DVec3) -> DVec2) {
+fn draw_rays(
+    page: &mut Page,
+    rays: &[LoggedRay],
+    stop: &Stop,
+    at: &dyn Fn(DVec3) -> DVec2,
+) {
     for ray in rays.iter().filter(|r| !r.shadow) {
         let colour = if ray.is_primary() {
             role::RAY
@@ -343,11 +361,18 @@ fn draw_rays(page: &mut Page, rays: &[LoggedRay], stop: &Stop, at: &dyn Fn(DVec3
             (_, Some(cut)) => {
                 // the ray that was not shot: a short dashed stub and an X
                 let to = from + 0.9 * direction;
-                page.segment(from, to, &Stroke::new(colour).width(2.0).dashed());
+                page.segment(
+                    from,
+                    to,
+                    &Stroke::new(colour).width(2.0).dashed(),
+                );
                 page.cross(to);
                 let why = match cut {
                     Cut::Depth => vec![
-                        format!("depth {} > {}:", ray.path.depth, stop.max_depth),
+                        format!(
+                            "depth {} > {}:",
+                            ray.path.depth, stop.max_depth
+                        ),
                         "cut by rule 1".to_string(),
                     ],
                     Cut::Contribution => vec![
@@ -398,8 +423,9 @@ fn draw_rays(page: &mut Page, rays: &[LoggedRay], stop: &Stop, at: &dyn Fn(DVec3
 
 /// A rule's ray counts for one pixel, as lines of text.
 fn summarise(rays: &[LoggedRay]) -> Vec<(String, Color)> {
-    let count =
-        |kind: fn(&LoggedRay) -> bool| rays.iter().filter(|r| kind(r) && r.cut.is_none()).count();
+    let count = |kind: fn(&LoggedRay) -> bool| {
+        rays.iter().filter(|r| kind(r) && r.cut.is_none()).count()
+    };
     let cut = rays.iter().find(|r| r.cut.is_some());
     let mut lines = vec![(
         format!(
@@ -432,8 +458,8 @@ fn depths() -> Figure {
     let mut world = chart_world("mirrors");
     (world.width, world.height) = (240, 135);
     let (w, h) = (world.width, world.height);
-    let (reference, whole) =
-        render(&world, &REFERENCE, &RenderOptions::QUIET).expect("a small render");
+    let (reference, whole) = render(&world, &REFERENCE, &RenderOptions::QUIET)
+        .expect("a small render");
     let shown = [0, 1, 2, 3, 5];
     let table_depths = [0, 1, 2, 3, 4, 5];
     let (pw, ph) = (f64::from(w), f64::from(h));
@@ -444,7 +470,8 @@ fn depths() -> Figure {
     let mut table = Vec::new();
     for depth in table_depths {
         let stop = Stop::depth(depth);
-        let (image, counts) = render(&world, &stop, &RenderOptions::QUIET).expect("a small render");
+        let (image, counts) = render(&world, &stop, &RenderOptions::QUIET)
+            .expect("a small render");
         let error = image_error(&image, &reference);
         table.push((depth, counts, error));
         let Some(k) = shown.iter().position(|&d| d == depth) else {
@@ -452,7 +479,8 @@ fn depths() -> Figure {
         };
         let (col, line) = (k % 3, k / 3);
         let x = side + col as f64 * (pw + gap);
-        let y = height - (line as f64 + 1.0) * (heading + ph) - line as f64 * gap;
+        let y =
+            height - (line as f64 + 1.0) * (heading + ph) - line as f64 * gap;
         page.image(
             DVec2::new(x, y),
             DVec2::new(x + pw, y + ph),
@@ -471,7 +499,11 @@ fn depths() -> Figure {
         let note = match depth {
             0 => "no reflected rays: chapter 04".to_string(),
             _ if error.max == 0.0 => "the same as the whole tree".to_string(),
-            _ => format!("RMSE {}, max {} levels", fixed(error.rmse, 2), error.max),
+            _ => format!(
+                "RMSE {}, max {} levels",
+                fixed(error.rmse, 2),
+                error.max
+            ),
         };
         page.label_sized(
             DVec2::new(centre, y + ph + 6.0),
@@ -487,7 +519,13 @@ fn depths() -> Figure {
     let columns = [x, x + 48.0, x + 130.0, x + 190.0];
     let header = ["depth", "reflected", "RMSE", "max"];
     for (c, text) in columns.iter().zip(header) {
-        page.label_sized(DVec2::new(*c, y), text, Anchor::E, 14.0, palette::BLACK);
+        page.label_sized(
+            DVec2::new(*c, y),
+            text,
+            Anchor::E,
+            14.0,
+            palette::BLACK,
+        );
     }
     for (i, (depth, counts, error)) in table.iter().enumerate() {
         let row_y = y - 22.0 * (i as f64 + 1.0);
@@ -521,7 +559,8 @@ fn depths() -> Figure {
         .expect("some depth of the table cuts nothing");
     // the default rule cuts nothing here either
     let (_, default_counts) =
-        render(&world, &DEFAULT_STOP, &RenderOptions::QUIET).expect("a small render");
+        render(&world, &DEFAULT_STOP, &RenderOptions::QUIET)
+            .expect("a small render");
     assert_eq!(default_counts, whole, "the default rule cuts no ray here");
     Figure::new(
         "depths",

@@ -22,16 +22,22 @@ pub const CHAPTER: Chapter = Chapter {
         what: "ch05 stopping",
         file: "stopping.csv",
         steps: |rounds| (measurements::CHART_SCENES.len() * rounds) as u64,
-        run: |repeats, step| Ok(to_csv(&measurements::measure_stopping(repeats, step))),
+        run: |repeats, step| {
+            Ok(to_csv(&measurements::measure_stopping(repeats, step)))
+        },
     }],
     renderer: Some(render),
 };
 
 /// `raystep render` with chapter 05's tracer: recursive reflected rays,
 /// stopped by contribution.
-fn render(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
+fn render(
+    scene: &Scene,
+    file: &str,
+    options: &RenderOptions,
+) -> Result<Image, String> {
     let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
-    let (image, _) =
-        ch05::render(&world, &ch05::DEFAULT_STOP, options).map_err(|e| e.to_string())?;
+    let (image, _) = ch05::render(&world, &ch05::DEFAULT_STOP, options)
+        .map_err(|e| e.to_string())?;
     Ok(image)
 }

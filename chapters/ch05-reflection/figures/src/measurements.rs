@@ -28,7 +28,8 @@ pub const CHART_DEPTHS: [u32; 19] = [
 ];
 
 /// Rule 2's thresholds on the chart: 10⁻¹ … 10⁻⁴, two a decade.
-pub const CHART_THRESHOLDS: [f64; 7] = [1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 3e-4, 1e-4];
+pub const CHART_THRESHOLDS: [f64; 7] =
+    [1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 3e-4, 1e-4];
 
 /// What every image is compared with: rule 1 alone at [`SAFETY_DEPTH`],
 /// which cuts no ray at all in either scene (a test checks it), so the
@@ -74,7 +75,8 @@ pub fn chart_world(name: &str) -> World {
         .find(|(scene, _)| *scene == name)
         .unwrap_or_else(|| panic!("no chart scene `{name}`"));
     let file = format!("{name}.toml");
-    let mut world = ch03::parse(text, &file).expect("the chapter's scene builds");
+    let mut world =
+        ch03::parse(text, &file).expect("the chapter's scene builds");
     (world.width, world.height) = CHART_SIZE;
     world
 }
@@ -112,10 +114,12 @@ pub fn measure_stopping(rounds: usize, mut step: impl FnMut()) -> Vec<StopRow> {
     let mut rows = Vec::new();
     for (scene, _) in CHART_SCENES {
         let world = chart_world(scene);
-        let (reference, _) = render(&world, &REFERENCE, &options).expect("a small render");
+        let (reference, _) =
+            render(&world, &REFERENCE, &options).expect("a small render");
         let rules = chart_rules();
         for (rule, parameter, stop) in &rules {
-            let (image, counts) = render(&world, stop, &options).expect("a small render");
+            let (image, counts) =
+                render(&world, stop, &options).expect("a small render");
             rows.push(row(scene, rule, *parameter, &image, &reference, counts));
         }
         // the rules take turns, so that drift on the machine shifts all alike
@@ -129,7 +133,8 @@ pub fn measure_stopping(rounds: usize, mut step: impl FnMut()) -> Vec<StopRow> {
                 }) as Box<dyn FnMut()>
             })
             .collect();
-        let mut jobs: Vec<&mut dyn FnMut()> = jobs.iter_mut().map(|j| &mut **j as _).collect();
+        let mut jobs: Vec<&mut dyn FnMut()> =
+            jobs.iter_mut().map(|j| &mut **j as _).collect();
         let times = TIMING.with_rounds(rounds).median_ms(&mut jobs, &mut step);
         let first = rows.len() - rules.len();
         for (row, millis) in rows[first..].iter_mut().zip(times) {
@@ -199,7 +204,9 @@ pub fn savings(rows: &[StopRow]) -> Vec<Saving> {
             let threshold = rows
                 .iter()
                 .filter(|r| {
-                    r.scene == depth.scene && r.rule == CONTRIBUTION_RULE && r.rmse <= depth.rmse
+                    r.scene == depth.scene
+                        && r.rule == CONTRIBUTION_RULE
+                        && r.rmse <= depth.rmse
                 })
                 .min_by_key(|r| r.secondary)
                 .cloned();
@@ -213,7 +220,8 @@ pub fn savings(rows: &[StopRow]) -> Vec<Saving> {
 }
 
 impl CsvRow for StopRow {
-    const HEADER: &'static str = "scene,rule,parameter,rmse,max_error,rays,secondary,millis";
+    const HEADER: &'static str =
+        "scene,rule,parameter,rmse,max_error,rays,secondary,millis";
 
     fn to_line(&self) -> String {
         let r = self;
@@ -257,7 +265,12 @@ mod tests {
         raystep_render::csv::from_csv(text)
     }
 
-    fn stop_row(rule: &str, parameter: f64, rmse: f64, secondary: u64) -> StopRow {
+    fn stop_row(
+        rule: &str,
+        parameter: f64,
+        rmse: f64,
+        secondary: u64,
+    ) -> StopRow {
         StopRow {
             scene: "mirrors".into(),
             rule: rule.into(),
@@ -323,7 +336,8 @@ mod tests {
             progress: Progress::Never,
         };
         for (scene, _) in CHART_SCENES {
-            let (_, counts) = render(&chart_world(scene), &REFERENCE, &options).unwrap();
+            let (_, counts) =
+                render(&chart_world(scene), &REFERENCE, &options).unwrap();
             assert_eq!(counts.cut_by_depth, 0, "{scene}: a ray was cut");
             assert_eq!(counts.cut_by_contribution, 0, "{scene}: a ray was cut");
             assert!(counts.secondary > 0, "{scene}: mirrors reflect");

@@ -6,7 +6,8 @@ use std::path::Path;
 /// A world from scene-file text, rendered at `width × height` (the camera
 /// is built for that proportion).
 pub fn world_from(text: &str, name: &str, width: u32, height: u32) -> World {
-    let mut scene = raystep_scene::parse(text, name).expect("the test scene parses");
+    let mut scene =
+        raystep_scene::parse(text, name).expect("the test scene parses");
     (scene.width, scene.height) = (width, height);
     ch03::world(&scene, name).expect("the test scene builds")
 }
@@ -15,7 +16,8 @@ pub fn world_from(text: &str, name: &str, width: u32, height: u32) -> World {
 pub fn chapter_scene(name: &str, width: u32, height: u32) -> World {
     let file = format!("scenes/{name}.toml");
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(&file);
-    let text = std::fs::read_to_string(&path).expect("the chapter's scene is there");
+    let text =
+        std::fs::read_to_string(&path).expect("the chapter's scene is there");
     world_from(&text, &file, width, height)
 }
 

@@ -81,7 +81,10 @@ fn nudge(mode: usize) -> i32 {
     4 * (mode as i32 - 1)
 }
 
-fn draw(area: &raystep_figure::ChartArea, rows: &[FresnelRow]) -> Result<(), ChartError> {
+fn draw(
+    area: &raystep_figure::ChartArea,
+    rows: &[FresnelRow],
+) -> Result<(), ChartError> {
     // a legend strip across the top, then three panels
     let (legend, panels) = area.split_vertically(34);
     for (i, (name, colour)) in NAMES.iter().zip(COLOURS).enumerate() {
@@ -124,7 +127,8 @@ fn draw(area: &raystep_figure::ChartArea, rows: &[FresnelRow]) -> Result<(), Cha
 
     // Middle: every (material, mode) as a point: render time against error.
     let max_ms = rows.iter().map(|r| r.millis).fold(0.0, f64::max) * 1.1;
-    let min_ms = rows.iter().map(|r| r.millis).fold(f64::INFINITY, f64::min) * 0.9;
+    let min_ms =
+        rows.iter().map(|r| r.millis).fold(f64::INFINITY, f64::min) * 0.9;
     let mut c = ChartBuilder::on(&panels[1])
         .caption("accuracy against speed", ("sans-serif", 17))
         .margin(10)
@@ -140,11 +144,15 @@ fn draw(area: &raystep_figure::ChartArea, rows: &[FresnelRow]) -> Result<(), Cha
         .light_line_style(WHITE)
         .draw()?;
     for (k, colour) in COLOURS.iter().enumerate() {
-        c.draw_series(of_mode(k).map(|r| Circle::new((r.millis, rmse(r)), 4, colour.filled())))?;
+        c.draw_series(
+            of_mode(k)
+                .map(|r| Circle::new((r.millis, rmse(r)), 4, colour.filled())),
+        )?;
     }
 
     // Right: one call of each formula, material by material.
-    let max_ns = rows.iter().map(|r| r.nanos_per_call).fold(0.0, f64::max) * 1.15;
+    let max_ns =
+        rows.iter().map(|r| r.nanos_per_call).fold(0.0, f64::max) * 1.15;
     let mut c = ChartBuilder::on(&panels[2])
         .caption("one call of the reflectance", ("sans-serif", 17))
         .margin(10)

@@ -8,13 +8,15 @@
 //! [`Media::cross`] and [`refract`] on the scene's own objects.
 use raystep_figure::numbers::fixed;
 use raystep_figure::palette::role;
-use raystep_figure::{Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, camera_pixel, palette};
+use raystep_figure::{
+    Anchor, Color, DVec2, DVec3, Figure, Page, Stroke, camera_pixel, palette,
+};
 use raystep_render::{Image, RenderOptions};
 
 use crate::measurements::MATERIALS_SCENE;
 use ch06::{
-    CAMERA_MEDIUM, DEFAULT_STOP, Fresnel, Interval, Media, REFRACTIVE_INDICES, Ray, World,
-    critical_angle, refract, render,
+    CAMERA_MEDIUM, DEFAULT_STOP, Fresnel, Interval, Media, REFRACTIVE_INDICES,
+    Ray, World, critical_angle, refract, render,
 };
 
 /// Every figure of this chapter, in the order the lecture shows them.
@@ -256,7 +258,11 @@ fn critical_angles() -> Figure {
                     .truncate();
                 assert!((t - d).length() < 1e-12, "equal indices do not bend");
                 page.arrow(p - len * d, p, &Stroke::vector(role::RAY));
-                page.arrow(p, p + 0.75 * len * t, &Stroke::vector(TRANSMIT_COLOR));
+                page.arrow(
+                    p,
+                    p + 0.75 * len * t,
+                    &Stroke::vector(TRANSMIT_COLOR),
+                );
                 page.label_sized(
                     DVec2::new(right - 0.04, corner.y - 0.2),
                     "no critical angle:",
@@ -308,13 +314,21 @@ fn critical_angles() -> Figure {
                     );
                 }
                 page.arrow(p - len * d, p, &Stroke::vector(role::RAY));
-                page.arrow(p, p + 1.3 * len * grazing, &Stroke::vector(TRANSMIT_COLOR));
+                page.arrow(
+                    p,
+                    p + 1.3 * len * grazing,
+                    &Stroke::vector(TRANSMIT_COLOR),
+                );
                 if air {
                     page.angle_arc(p, -d, n, 34.0, &thin, Some("θ_c"));
                 } else {
                     // the label beyond the arc, clear of both rays
                     page.angle_arc(p, -d, n, 34.0, &thin, None);
-                    page.label(p + 0.62 * turned(n, -critical / 2.0), "θ_c", Anchor::Center);
+                    page.label(
+                        p + 0.62 * turned(n, -critical / 2.0),
+                        "θ_c",
+                        Anchor::Center,
+                    );
                 }
                 page.label_sized(
                     DVec2::new(right - 0.04, corner.y - 0.2),
@@ -357,7 +371,9 @@ fn critical_angles() -> Figure {
     );
     let list: Vec<String> = by_index()
         .into_iter()
-        .filter_map(|(m, n)| critical_angle(n, n_phi).map(|c| format!("{m} {}", degrees(c))))
+        .filter_map(|(m, n)| {
+            critical_angle(n, n_phi).map(|c| format!("{m} {}", degrees(c)))
+        })
         .collect();
     Figure::new(
         "critical-angles",
@@ -399,7 +415,9 @@ mod reflectance {
             .collect();
         if let Some(c) = critical {
             let c = c.to_degrees();
-            theta.extend([0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 0.0].map(|d| c - d));
+            theta.extend(
+                [0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 0.0].map(|d| c - d),
+            );
         }
         theta.sort_by(f64::total_cmp);
         theta
@@ -420,7 +438,10 @@ mod reflectance {
         let (legend, panels) = area.split_vertically(36);
         for (k, (name, colour)) in CURVES.iter().enumerate() {
             let x = 30 + 110 * k as i32;
-            legend.draw(&Rectangle::new([(x, 16), (x + 22, 20)], colour.filled()))?;
+            legend.draw(&Rectangle::new(
+                [(x, 16), (x + 22, 20)],
+                colour.filled(),
+            ))?;
             legend.draw(&Text::new(*name, (x + 28, 10), ("sans-serif", 15)))?;
         }
         let x = 30 + 110 * CURVES.len() as i32 + 10;
@@ -475,7 +496,10 @@ mod reflectance {
                         .map(|&t| (t, f(t.to_radians().cos(), n_theta, n_phi)))
                         .collect()
                 };
-                c.draw_series(LineSeries::new(curve(fresnel), colour.stroke_width(2)))?;
+                c.draw_series(LineSeries::new(
+                    curve(fresnel),
+                    colour.stroke_width(2),
+                ))?;
                 c.draw_series(DashedLineSeries::new(
                     curve(schlick),
                     7,
@@ -515,13 +539,14 @@ mod reflectance {
 /// `scenes/materials.toml` rendered with the exact Fresnel split, each ball
 /// labelled with its material under it.
 fn materials() -> Figure {
-    let mut world =
-        ch03::parse(MATERIALS_SCENE, "materials.toml").expect("the figure\'s scene builds");
+    let mut world = ch03::parse(MATERIALS_SCENE, "materials.toml")
+        .expect("the figure\'s scene builds");
     let zoom = 4;
     (world.width, world.height) = (world.width * zoom, world.height * zoom);
     let (w, h) = (world.width, world.height);
-    let (image, counts) = render(&world, &DEFAULT_STOP, Fresnel::Exact, &RenderOptions::QUIET)
-        .expect("a small render");
+    let (image, counts) =
+        render(&world, &DEFAULT_STOP, Fresnel::Exact, &RenderOptions::QUIET)
+            .expect("a small render");
     let (pw, ph) = (f64::from(w), f64::from(h));
     let (side, top, bottom) = (12.0, 12.0, 52.0);
     let mut page = Page::new(pw + 2.0 * side, ph + top + bottom);
@@ -532,7 +557,8 @@ fn materials() -> Figure {
         h,
         &image.to_srgb8(),
     );
-    let scene = raystep_scene::parse(MATERIALS_SCENE, "materials.toml").expect("it parses");
+    let scene = raystep_scene::parse(MATERIALS_SCENE, "materials.toml")
+        .expect("it parses");
     for object in &scene.objects {
         let raystep_scene::Shape::Sphere { center, .. } = object.shape else {
             continue;
@@ -595,7 +621,8 @@ fn bubble_views(world: &World) -> Vec<BubbleView> {
             .expect("the bubble scene has water and air")
     };
     let (water, air) = (index("water"), index("air"));
-    let ior = |object: usize| world.materials[world.objects[object].material].ior;
+    let ior =
+        |object: usize| world.materials[world.objects[object].material].ior;
     let hit_of = |ray: &Ray| {
         world
             .closest_hit(ray, Interval::FORWARD)
@@ -610,15 +637,27 @@ fn bubble_views(world: &World) -> Vec<BubbleView> {
                 && k == water
             {
                 let d = ray.direction.normalize();
-                let into_water = Media::new(CAMERA_MEDIUM).cross(water, ior(water), true);
+                let into_water =
+                    Media::new(CAMERA_MEDIUM).cross(water, ior(water), true);
                 let normal = hit.facing(d);
-                if let Some(t) = refract(d, normal, into_water.n_theta, into_water.n_phi) {
-                    let inside = Ray::new(ch04::offset_scale_aware(hit.point, -normal), t);
+                if let Some(t) =
+                    refract(d, normal, into_water.n_theta, into_water.n_phi)
+                {
+                    let inside = Ray::new(
+                        ch04::offset_scale_aware(hit.point, -normal),
+                        t,
+                    );
                     if let Some((hit, k)) = hit_of(&inside)
                         && k == air
                     {
-                        let into_air = into_water.beyond.cross(air, ior(air), true);
-                        view = match refract(t, hit.facing(t), into_air.n_theta, into_air.n_phi) {
+                        let into_air =
+                            into_water.beyond.cross(air, ior(air), true);
+                        view = match refract(
+                            t,
+                            hit.facing(t),
+                            into_air.n_theta,
+                            into_air.n_phi,
+                        ) {
                             None => BubbleView::Reflected,
                             Some(_) => BubbleView::Entered,
                         };
@@ -634,15 +673,18 @@ fn bubble_views(world: &World) -> Vec<BubbleView> {
 /// `scenes/bubble.toml` rendered, beside a map of where the eye's rays
 /// meet the bubble past the critical angle.
 fn bubble() -> Figure {
-    let mut world = ch03::parse(BUBBLE_SCENE, "bubble.toml").expect("the figure\'s scene builds");
+    let mut world = ch03::parse(BUBBLE_SCENE, "bubble.toml")
+        .expect("the figure\'s scene builds");
     (world.width, world.height) = (480, 270);
     let (w, h) = (world.width, world.height);
-    let (image, counts) = render(&world, &DEFAULT_STOP, Fresnel::Exact, &RenderOptions::QUIET)
-        .expect("a small render");
+    let (image, counts) =
+        render(&world, &DEFAULT_STOP, Fresnel::Exact, &RenderOptions::QUIET)
+            .expect("a small render");
     assert_eq!(counts.medium_mismatches, 0, "every crossing fits the stack");
     let views = bubble_views(&world);
     let count = |v: BubbleView| views.iter().filter(|&&x| x == v).count();
-    let (reflected, entered) = (count(BubbleView::Reflected), count(BubbleView::Entered));
+    let (reflected, entered) =
+        (count(BubbleView::Reflected), count(BubbleView::Entered));
     assert!(reflected > 0 && entered > 0, "the bubble shows both");
     // the render tinted by what each pixel's ray does, faded elsewhere
     let map = Image::from_fn(w, h, |column, row| {
@@ -682,8 +724,8 @@ fn bubble() -> Figure {
             palette::BLACK,
         );
     }
-    let critical =
-        critical_angle(index_of("water"), index_of("air")).expect("water is denser than air");
+    let critical = critical_angle(index_of("water"), index_of("air"))
+        .expect("water is denser than air");
     let percent = |n: usize| 100.0 * n as f64 / (entered + reflected) as f64;
     page.text_lines(
         DVec2::new(side, bottom - 16.0),

@@ -22,16 +22,27 @@ pub const CHAPTER: Chapter = Chapter {
         what: "ch06 fresnel",
         file: "fresnel.csv",
         steps: |_| ch06::REFRACTIVE_INDICES.len() as u64,
-        run: |repeats, step| Ok(to_csv(&measurements::measure_fresnel(repeats, step))),
+        run: |repeats, step| {
+            Ok(to_csv(&measurements::measure_fresnel(repeats, step)))
+        },
     }],
     renderer: Some(render),
 };
 
 /// `raystep render` with chapter 06's tracer: reflection and refraction,
 /// split by the exact Fresnel equations.
-fn render(scene: &Scene, file: &str, options: &RenderOptions) -> Result<Image, String> {
+fn render(
+    scene: &Scene,
+    file: &str,
+    options: &RenderOptions,
+) -> Result<Image, String> {
     let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
-    let (image, _) = ch06::render(&world, &ch06::DEFAULT_STOP, ch06::Fresnel::Exact, options)
-        .map_err(|e| e.to_string())?;
+    let (image, _) = ch06::render(
+        &world,
+        &ch06::DEFAULT_STOP,
+        ch06::Fresnel::Exact,
+        options,
+    )
+    .map_err(|e| e.to_string())?;
     Ok(image)
 }

@@ -43,7 +43,8 @@ pub const CALLS: u32 = 100_000;
 /// # Panics
 /// If the scene has no ball of that material.
 pub fn one_ball(material: &str) -> World {
-    ch03::world(&one_ball_scene(material), "materials.toml").expect("the chapter's scene builds")
+    ch03::world(&one_ball_scene(material), "materials.toml")
+        .expect("the chapter's scene builds")
 }
 
 /// The scene file of [`one_ball`].
@@ -105,7 +106,11 @@ fn batch(mode: Fresnel, ior: f64) -> f64 {
     for k in 0..CALLS {
         let cos_theta = f64::from(k / 2) / f64::from(CALLS / 2);
         let (n_theta, n_phi) = if k % 2 == 0 { (1.0, ior) } else { (ior, 1.0) };
-        sum += black_box(mode).reflectance(black_box(cos_theta), n_theta, black_box(n_phi));
+        sum += black_box(mode).reflectance(
+            black_box(cos_theta),
+            n_theta,
+            black_box(n_phi),
+        );
     }
     sum
 }
@@ -124,7 +129,10 @@ pub const RENDER_TIMING: Timing = Timing {
 /// reflectance (batches of [`CALLS`]) with `rounds` rounds, the modes of a
 /// material taking turns (measured). `step` is called after each material,
 /// for a progress bar.
-pub fn measure_fresnel(rounds: usize, mut step: impl FnMut()) -> Vec<FresnelRow> {
+pub fn measure_fresnel(
+    rounds: usize,
+    mut step: impl FnMut(),
+) -> Vec<FresnelRow> {
     let options = RenderOptions {
         threads: Some(1),
         progress: Progress::Never,
@@ -154,7 +162,8 @@ pub fn measure_fresnel(rounds: usize, mut step: impl FnMut()) -> Vec<FresnelRow>
         let millis = RENDER_TIMING
             .with_rounds(rounds)
             .median_ms(&mut as_jobs(&mut renders), || ());
-        let formula_ms = Timing { rounds, batch: 1 }.median_ms(&mut as_jobs(&mut formulas), || ());
+        let formula_ms = Timing { rounds, batch: 1 }
+            .median_ms(&mut as_jobs(&mut formulas), || ());
         for (k, (name, mode)) in CHART_MODES.into_iter().enumerate() {
             let (image, counts) = draw(&world, mode);
             let error = image_error(&image, &reference);
@@ -175,18 +184,28 @@ pub fn measure_fresnel(rounds: usize, mut step: impl FnMut()) -> Vec<FresnelRow>
 }
 
 /// The boxed jobs as the timer takes them.
-fn as_jobs<'a>(jobs: &'a mut [Box<dyn FnMut() + '_>]) -> Vec<&'a mut dyn FnMut()> {
+fn as_jobs<'a>(
+    jobs: &'a mut [Box<dyn FnMut() + '_>],
+) -> Vec<&'a mut dyn FnMut()> {
     jobs.iter_mut().map(|job| &mut **job as _).collect()
 }
 
 impl CsvRow for FresnelRow {
-    const HEADER: &'static str = "material,ior,mode,rmse,max_error,rays,millis,nanos_per_call";
+    const HEADER: &'static str =
+        "material,ior,mode,rmse,max_error,rays,millis,nanos_per_call";
 
     fn to_line(&self) -> String {
         let r = self;
         format!(
             "{},{},{},{:.6},{},{},{:.3},{:.3}",
-            r.material, r.ior, r.mode, r.rmse, r.max_error, r.rays, r.millis, r.nanos_per_call
+            r.material,
+            r.ior,
+            r.mode,
+            r.rmse,
+            r.max_error,
+            r.rays,
+            r.millis,
+            r.nanos_per_call
         )
     }
 
@@ -232,7 +251,9 @@ mod tests {
             nanos_per_call: 2.125,
         }];
         let csv = to_csv(&rows);
-        assert!(csv.contains("\nglass,1.5,schlick,0.250000,7,41234,3.500,2.125\n"));
+        assert!(
+            csv.contains("\nglass,1.5,schlick,0.250000,7,41234,3.500,2.125\n")
+        );
         assert_eq!(from_csv(&csv).unwrap(), rows);
         assert!(from_csv("nope\n").unwrap_err().starts_with("line 1:"));
         let bad = format!("{CSV_HEADER}\nglass,1.5,exact,x,0,1,1,1\n");
@@ -281,7 +302,8 @@ mod tests {
         // and both are 1 past the critical angle, so their sums are close
         // but not equal.
         assert_eq!(batch(Fresnel::Off, 1.5), 0.0);
-        let (exact, schlick) = (batch(Fresnel::Exact, 1.5), batch(Fresnel::Schlick, 1.5));
+        let (exact, schlick) =
+            (batch(Fresnel::Exact, 1.5), batch(Fresnel::Schlick, 1.5));
         assert!(exact > 0.0 && schlick > 0.0);
         assert!(
             (exact - schlick).abs() / exact < 0.1,

@@ -32,12 +32,14 @@ impl PowerFit {
     /// The least-squares line through (ln N, ln t) of `points` (N, t), all
     /// positive; None for fewer than two distinct N.
     pub fn of(points: &[(f64, f64)]) -> Option<PowerFit> {
-        let logs: Vec<(f64, f64)> = points.iter().map(|&(n, t)| (n.ln(), t.ln())).collect();
+        let logs: Vec<(f64, f64)> =
+            points.iter().map(|&(n, t)| (n.ln(), t.ln())).collect();
         let count = logs.len() as f64;
         let mean_x = logs.iter().map(|p| p.0).sum::<f64>() / count;
         let mean_y = logs.iter().map(|p| p.1).sum::<f64>() / count;
         let sxx: f64 = logs.iter().map(|p| (p.0 - mean_x).powi(2)).sum();
-        let sxy: f64 = logs.iter().map(|p| (p.0 - mean_x) * (p.1 - mean_y)).sum();
+        let sxy: f64 =
+            logs.iter().map(|p| (p.0 - mean_x) * (p.1 - mean_y)).sum();
         if sxx <= 0.0 || !sxx.is_finite() {
             return None;
         }
@@ -71,7 +73,8 @@ impl CostFit {
     /// per_triangle·N − t) / t)²; None for fewer than two distinct N.
     pub fn of(points: &[(f64, f64)]) -> Option<CostFit> {
         // the normal equations of the weighted problem, weights 1/t²
-        let (mut s, mut sn, mut snn, mut st, mut snt) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        let (mut s, mut sn, mut snn, mut st, mut snt) =
+            (0.0, 0.0, 0.0, 0.0, 0.0);
         for &(n, t) in points {
             let w = 1.0 / (t * t);
             s += w;
@@ -112,13 +115,17 @@ pub struct Method<'a> {
 impl<'a> Method<'a> {
     /// The rows of `method`; an error if fewer than two stages of
     /// different sizes were measured.
-    pub fn of(rows: &'a [ScalingRow], method: &str) -> Result<Method<'a>, String> {
+    pub fn of(
+        rows: &'a [ScalingRow],
+        method: &str,
+    ) -> Result<Method<'a>, String> {
         let mut balls: Vec<&ScalingRow> = rows
             .iter()
             .filter(|r| r.method == method && r.scene != BUNNY)
             .collect();
         balls.sort_by_key(|r| r.triangles);
-        let bunny = rows.iter().find(|r| r.method == method && r.scene == BUNNY);
+        let bunny =
+            rows.iter().find(|r| r.method == method && r.scene == BUNNY);
         let points: Vec<(f64, f64)> = balls.iter().map(|r| at(r)).collect();
         let too_few = || format!("{method}: fewer than two scene sizes to fit");
         let fit = PowerFit::of(&points).ok_or_else(too_few)?;
@@ -141,8 +148,10 @@ fn at(row: &ScalingRow) -> (f64, f64) {
 pub fn scaling_chart() -> Result<Figure, ChartError> {
     let rows: Vec<ScalingRow> = measured("ch07", "scaling.csv")?;
     let path = book_figures().join("ch07").join("scaling.csv");
-    let cast = Method::of(&rows, RAYCAST).map_err(|e| format!("{}: {e}", path.display()))?;
-    let raster = Method::of(&rows, RASTERIZE).map_err(|e| format!("{}: {e}", path.display()))?;
+    let cast = Method::of(&rows, RAYCAST)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let raster = Method::of(&rows, RASTERIZE)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
     chart(
         "scaling-chart",
         "Time to draw one image of shapes.toml (160×90, one thread) against its number of triangles N: the scene alone (12 triangles), with a ball of 20·4ⁿ triangles (n = 0 … 6), and with the Stanford bunny in the ball's place. Pale lines: the least-squares power law through the ball points; the bunny is left out of the fit and lands on it. Dashed: the rasterizer's time as a fixed cost plus a cost per triangle, fitted to the same points. Grey brackets: how many times longer ray casting takes than rasterizing, at the smallest and the largest N.",
@@ -156,7 +165,8 @@ pub fn scaling_chart() -> Result<Figure, ChartError> {
 fn power_label(x: &f64) -> String {
     let exponent = x.log10().round();
     if exponent >= 4.0 && (x / 10f64.powf(exponent) - 1.0).abs() < 1e-9 {
-        let raised: String = format!("{exponent}").chars().map(superscript).collect();
+        let raised: String =
+            format!("{exponent}").chars().map(superscript).collect();
         format!("10{raised}")
     } else if *x >= 1.0 {
         format!("{x:.0}")
@@ -176,7 +186,10 @@ fn draw(
         .margin_right(24)
         .x_label_area_size(44)
         .y_label_area_size(64)
-        .build_cartesian_2d((3f64..3e5).log_scale(), (0.5f64..4e4).log_scale())?;
+        .build_cartesian_2d(
+            (3f64..3e5).log_scale(),
+            (0.5f64..4e4).log_scale(),
+        )?;
     c.configure_mesh()
         .x_desc("N, triangles in the scene")
         .y_desc(format!(
@@ -206,7 +219,8 @@ fn draw(
         RASTERIZE_COLOUR.stroke_width(2),
     ))?;
 
-    for (method, colour) in [(cast, RAYCAST_COLOUR), (raster, RASTERIZE_COLOUR)] {
+    for (method, colour) in [(cast, RAYCAST_COLOUR), (raster, RASTERIZE_COLOUR)]
+    {
         // the fit, a pale line, over the points it was fitted to (a straight
         // line on these axes: its two ends)
         let (first, last) = (
@@ -214,7 +228,10 @@ fn draw(
             at(method.balls[method.balls.len() - 1]).0,
         );
         let fitted = [first, last].map(|n| (n, method.fit.at(n)));
-        c.draw_series(LineSeries::new(fitted, colour.mix(0.55).stroke_width(3)))?;
+        c.draw_series(LineSeries::new(
+            fitted,
+            colour.mix(0.55).stroke_width(3),
+        ))?;
         // the points: the balls as dots, the bunny as a triangle
         c.draw_series(
             method
@@ -402,7 +419,8 @@ mod tests {
         assert!((fit.at(50.0) - 7500.0).abs() < 1e-6);
         // the least-squares slope of log t: here (1, 1), (10, 1), (100, 100)
         // in logs (0, 0), (1, 0), (2, 2) → slope 1
-        let fit = PowerFit::of(&[(1.0, 1.0), (10.0, 1.0), (100.0, 100.0)]).unwrap();
+        let fit =
+            PowerFit::of(&[(1.0, 1.0), (10.0, 1.0), (100.0, 100.0)]).unwrap();
         assert!((fit.b - 1.0).abs() < 1e-12, "{fit:?}");
         assert_eq!(PowerFit::of(&[(5.0, 1.0), (5.0, 2.0)]), None);
         assert_eq!(PowerFit::of(&[]), None);
@@ -419,7 +437,8 @@ mod tests {
         // the relative error is what is minimised: about 2 ms + 10 µs·N,
         // measured with noise; every point within 2.5 % (a plain least
         // squares fit follows the 98 ms point and misses the 2 ms one by 8 %)
-        let points = [(10.0, 2.0), (100.0, 2.9), (1000.0, 12.0), (10_000.0, 98.0)];
+        let points =
+            [(10.0, 2.0), (100.0, 2.9), (1000.0, 12.0), (10_000.0, 98.0)];
         let fit = CostFit::of(&points).unwrap();
         for (n, t) in points {
             assert!((fit.at(n) / t - 1.0).abs() < 0.025, "{fit:?} at {n}");

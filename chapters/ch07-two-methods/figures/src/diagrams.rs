@@ -15,8 +15,8 @@ use raystep_figure::{Anchor, Color, DVec2, Figure, Page, Stroke, palette};
 use raystep_render::{Image, srgb8};
 
 use ch07::{
-    Buffers, DepthBuffer, Mesh, Projection, Stage, barycentric, clip_near, compare, covers,
-    perspective_depth, rasterize, raycast, shapes,
+    Buffers, DepthBuffer, Mesh, Projection, Stage, barycentric, clip_near,
+    compare, covers, perspective_depth, rasterize, raycast, shapes,
 };
 
 /// Every figure of chapter 07, in the order the lecture shows them.
@@ -25,7 +25,8 @@ pub fn all() -> Vec<Figure> {
 }
 
 /// One colour per triangle (as chapter 02 colours its polygons).
-const TRIANGLE_COLORS: [Color; 3] = [palette::SKY_BLUE, palette::ORANGE, palette::GREEN];
+const TRIANGLE_COLORS: [Color; 3] =
+    [palette::SKY_BLUE, palette::ORANGE, palette::GREEN];
 /// The ids' colours in the id images (not vermilion: that marks a
 /// difference).
 const ID_COLORS: [Color; 8] = [
@@ -55,9 +56,11 @@ fn shade(c: Color) -> Color {
 
 /// The stage of a scene file's text at `width × height`.
 fn stage_from(text: &str, name: &str, width: u32, height: u32) -> Stage {
-    let mut scene = raystep_scene::parse(text, name).expect("the figure's scene parses");
+    let mut scene =
+        raystep_scene::parse(text, name).expect("the figure's scene parses");
     (scene.width, scene.height) = (width, height);
-    Stage::from_scene(&scene, name).expect("the figure's scene has only polygons")
+    Stage::from_scene(&scene, name)
+        .expect("the figure's scene has only polygons")
 }
 
 /// The projection both methods use for `stage`.
@@ -203,8 +206,13 @@ fn raster_visits(stage: &Stage) -> (Vec<Visit>, u64) {
                     if !covers(&screen, p) {
                         continue;
                     }
-                    let lambda = barycentric(&screen, p).expect("a covering triangle has an area");
-                    let shaded = depth.test_and_set(column, row, perspective_depth(lambda, z));
+                    let lambda = barycentric(&screen, p)
+                        .expect("a covering triangle has an area");
+                    let shaded = depth.test_and_set(
+                        column,
+                        row,
+                        perspective_depth(lambda, z),
+                    );
                     visits.push(Visit {
                         triangle: k,
                         column,
@@ -243,7 +251,9 @@ fn ray_tests(stage: &Stage) -> Vec<Vec<Option<f64>>> {
             let hits: Vec<Option<f64>> = world
                 .objects
                 .iter()
-                .map(|o| o.shape.intersect(&ray, Interval::FORWARD).map(|h| h.t))
+                .map(|o| {
+                    o.shape.intersect(&ray, Interval::FORWARD).map(|h| h.t)
+                })
                 .collect();
             ids.push(closest(&hits));
             tests.push(hits);
@@ -278,7 +288,10 @@ fn outlines(page: &mut Page, stage: &Stage, grid: &Grid) {
         page.polygon(
             &pts,
             None,
-            Some(&Stroke::new(shade(TRIANGLE_COLORS[triangle.object % 3])).width(1.5)),
+            Some(
+                &Stroke::new(shade(TRIANGLE_COLORS[triangle.object % 3]))
+                    .width(1.5),
+            ),
         );
     }
 }
@@ -310,7 +323,9 @@ fn loops() -> Figure {
         top_left: DVec2::new(side + gw + gap, height - top),
         ..left
     };
-    let final_color = |c: u32, r: u32| raster.id_at(c, r).map(|i| tint(TRIANGLE_COLORS[i % 3]));
+    let final_color = |c: u32, r: u32| {
+        raster.id_at(c, r).map(|i| tint(TRIANGLE_COLORS[i % 3]))
+    };
 
     // Left: object order.
     page.label_sized(
@@ -324,7 +339,8 @@ fn loops() -> Figure {
     outlines(&mut page, &stage, &left);
     // the visits of each pixel, in order: the step number, struck out if
     // a later triangle drew over it, × if the z test rejected it
-    let mut per_pixel: Vec<Vec<(usize, &Visit)>> = vec![Vec::new(); (w * h) as usize];
+    let mut per_pixel: Vec<Vec<(usize, &Visit)>> =
+        vec![Vec::new(); (w * h) as usize];
     for (step, v) in visits.iter().enumerate() {
         per_pixel[(v.row * w + v.column) as usize].push((step + 1, v));
     }
@@ -341,7 +357,8 @@ fn loops() -> Figure {
                 (14.0, 12.0)
             };
             for (k, (step, v)) in list.iter().enumerate() {
-                let y = centre.y + (lines - 1.0) * step_y / 2.0 - step_y * k as f64;
+                let y =
+                    centre.y + (lines - 1.0) * step_y / 2.0 - step_y * k as f64;
                 let at = DVec2::new(centre.x, y);
                 let text = format!("{}{step}", names[v.triangle]);
                 if !v.shaded {
@@ -353,10 +370,22 @@ fn loops() -> Figure {
                         shade(REJECT_COLOR),
                     );
                 } else if Some(k) == last_shaded {
-                    page.label_sized(at, &text, Anchor::Center, size, palette::BLACK);
+                    page.label_sized(
+                        at,
+                        &text,
+                        Anchor::Center,
+                        size,
+                        palette::BLACK,
+                    );
                 } else {
                     overdrawn += 1;
-                    page.label_sized(at, &text, Anchor::Center, size - 1.0, palette::NOTE);
+                    page.label_sized(
+                        at,
+                        &text,
+                        Anchor::Center,
+                        size - 1.0,
+                        palette::NOTE,
+                    );
                     page.segment(
                         at - DVec2::new(10.0, 0.0),
                         at + DVec2::new(10.0, 0.0),
@@ -376,7 +405,8 @@ fn loops() -> Figure {
         17.0,
         palette::BLACK,
     );
-    let ids: Vec<Option<usize>> = tests.iter().map(|hits| closest(hits)).collect();
+    let ids: Vec<Option<usize>> =
+        tests.iter().map(|hits| closest(hits)).collect();
     assert_eq!(
         ids, raster.id,
         "both loops show the same triangle everywhere"
@@ -405,7 +435,8 @@ fn loops() -> Figure {
                     DVec2::new(x - 4.0, centre.y - 13.0),
                     DVec2::new(x + 4.0, centre.y - 5.0),
                 );
-                let square = [lo, DVec2::new(hi.x, lo.y), hi, DVec2::new(lo.x, hi.y)];
+                let square =
+                    [lo, DVec2::new(hi.x, lo.y), hi, DVec2::new(lo.x, hi.y)];
                 let kept = ids[i] == Some(k);
                 hits += usize::from(t.is_some());
                 page.polygon(
@@ -568,8 +599,9 @@ fn coverage() -> Figure {
     // B's edges as covers walks them, each with its inward normal: the
     // side where its edge function is positive
     let b_edges = inner_edges(&b);
-    let is_shared =
-        |from: DVec2, to: DVec2| [from, to].contains(&SHARED_S) && [from, to].contains(&SHARED_E);
+    let is_shared = |from: DVec2, to: DVec2| {
+        [from, to].contains(&SHARED_S) && [from, to].contains(&SHARED_E)
+    };
     for (k, &(from, to)) in b_edges.iter().enumerate() {
         // on the shared edge, clear of A's arrow
         let mid = if is_shared(from, to) {
@@ -637,7 +669,12 @@ fn coverage() -> Figure {
                     Some(&Stroke::new(palette::BLACK).width(2.0)),
                 );
             } else if in_a || in_b {
-                page.circle(at, 4.0, Some(shade(if in_b { cb } else { ca })), None);
+                page.circle(
+                    at,
+                    4.0,
+                    Some(shade(if in_b { cb } else { ca })),
+                    None,
+                );
             } else {
                 page.circle(at, 2.0, Some(palette::GREY), None);
             }
@@ -683,7 +720,8 @@ fn coverage() -> Figure {
         .expect("B has the shared edge");
     let nb = (b_to - b_from).perp();
     let na = (a_to - a_from).perp();
-    let (a_owns, b_owns) = (owns_boundary(a_from, a_to), owns_boundary(b_from, b_to));
+    let (a_owns, b_owns) =
+        (owns_boundary(a_from, a_to), owns_boundary(b_from, b_to));
     assert!(b_owns && !a_owns, "B owns the shared edge");
     assert!(on_edge.iter().all(|&(_, b)| b), "B draws the shared edge");
     let pair = |v: DVec2| format!("({}, {})", signed(v.x, 6), signed(v.y, 6));
@@ -745,7 +783,8 @@ fn coverage() -> Figure {
         ),
         ("no centre twice, none left out".to_string(), palette::BLACK),
     ];
-    let lines: Vec<(&str, Color)> = lines.iter().map(|(t, c)| (t.as_str(), *c)).collect();
+    let lines: Vec<(&str, Color)> =
+        lines.iter().map(|(t, c)| (t.as_str(), *c)).collect();
     page.text_lines(DVec2::new(x, height - top - 14.0), 22.0, 15.0, &lines);
     Figure::new(
         "coverage",
@@ -840,7 +879,8 @@ fn depth() -> Figure {
         steps,
         1,
         &rgb8(steps, 1, |c, _| {
-            let z = near + (far - near) * (f64::from(c) + 0.5) / f64::from(steps);
+            let z =
+                near + (far - near) * (f64::from(c) + 0.5) / f64::from(steps);
             depth_grey(z, near, far)
         }),
     );
@@ -1003,7 +1043,8 @@ fn agreement() -> Figure {
     let mut bytes_differ = 0;
     for row in 0..h {
         for column in 0..w {
-            let (a, b) = (raster.color.get(column, row), cast.color.get(column, row));
+            let (a, b) =
+                (raster.color.get(column, row), cast.color.get(column, row));
             largest = largest.max((a - b).abs().max_element());
             bytes_differ += usize::from(srgb8(a) != srgb8(b));
         }
@@ -1024,7 +1065,8 @@ fn agreement() -> Figure {
     let fan_agree = compare(&fan, &fan_raster, &fan_cast);
     assert!(fan_agree.elsewhere.is_empty(), "ids differ only on edges");
     assert!(fan_agree.differing() > 0, "the fan shows differing pixels");
-    let differs = |c: u32, r: u32| fan_raster.id_at(c, r) != fan_cast.id_at(c, r);
+    let differs =
+        |c: u32, r: u32| fan_raster.id_at(c, r) != fan_cast.id_at(c, r);
 
     let scale = 1.5;
     let (pw, ph) = (f64::from(w) * scale, f64::from(h) * scale);
@@ -1034,7 +1076,8 @@ fn agreement() -> Figure {
     let width = 2.0 * side + 3.0 * pw + 2.0 * gap;
     let height = heading + ph + foot + heading + fph + foot;
     let mut page = Page::new(width, height);
-    let columns: Vec<f64> = (0..3).map(|k| side + f64::from(k) * (pw + gap)).collect();
+    let columns: Vec<f64> =
+        (0..3).map(|k| side + f64::from(k) * (pw + gap)).collect();
     let title = |page: &mut Page, x: f64, y: f64, text: &str| {
         page.label_sized(
             DVec2::new(x + pw / 2.0, y + 8.0),
@@ -1056,7 +1099,8 @@ fn agreement() -> Figure {
 
     // row 1
     let y1 = foot + fph + heading + foot;
-    let images: [(&Image, &str); 2] = [(&raster.color, "rasterized"), (&cast.color, "ray-cast")];
+    let images: [(&Image, &str); 2] =
+        [(&raster.color, "rasterized"), (&cast.color, "ray-cast")];
     for (k, (image, name)) in images.iter().enumerate() {
         page.image(
             DVec2::new(columns[k], y1),
@@ -1118,16 +1162,17 @@ fn agreement() -> Figure {
 
     // row 2
     let y2 = foot;
-    let fan_pixels = |page: &mut Page, x: f64, pixel: &dyn Fn(u32, u32) -> Color| {
-        let grid = Grid {
-            top_left: DVec2::new(x, y2 + fph),
-            cell: fan_cell,
-            width: fw,
-            height: fh,
+    let fan_pixels =
+        |page: &mut Page, x: f64, pixel: &dyn Fn(u32, u32) -> Color| {
+            let grid = Grid {
+                top_left: DVec2::new(x, y2 + fph),
+                cell: fan_cell,
+                width: fw,
+                height: fh,
+            };
+            grid.draw(page, |c, r| Some(pixel(c, r)));
+            grid
         };
-        grid.draw(page, |c, r| Some(pixel(c, r)));
-        grid
-    };
     fan_pixels(&mut page, columns[0], &|c, r| id_pixels(&fan_raster, c, r));
     title(&mut page, columns[0], y2 + fph, "rasterized ids");
     fan_pixels(&mut page, columns[1], &|c, r| id_pixels(&fan_cast, c, r));

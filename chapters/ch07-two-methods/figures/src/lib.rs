@@ -22,15 +22,22 @@ pub const CHAPTER: Chapter = Chapter {
         what: "ch07 scaling",
         file: "scaling.csv",
         steps: measurements::steps,
-        run: |repeats, step| Ok(to_csv(&measurements::measure_scaling(repeats, step)?)),
+        run: |repeats, step| {
+            Ok(to_csv(&measurements::measure_scaling(repeats, step)?))
+        },
     }],
     renderer: Some(render),
 };
 
 /// `raystep render` with chapter 07's rasterizer and z-buffer (polygons
 /// only, one thread).
-fn render(scene: &Scene, file: &str, _options: &RenderOptions) -> Result<Image, String> {
-    let stage = ch07::Stage::from_scene(scene, file).map_err(|e| e.to_string())?;
+fn render(
+    scene: &Scene,
+    file: &str,
+    _options: &RenderOptions,
+) -> Result<Image, String> {
+    let stage =
+        ch07::Stage::from_scene(scene, file).map_err(|e| e.to_string())?;
     let (buffers, _) = ch07::rasterize(&stage);
     Ok(buffers.color)
 }

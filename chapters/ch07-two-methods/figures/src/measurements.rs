@@ -57,7 +57,8 @@ pub fn chart_scenes() -> Vec<ChartScene> {
 /// The Stanford bunny: `../shared/meshes/bunny.obj` beside the workspace
 /// (it is not part of the repository).
 pub fn bunny_path() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../../shared/meshes/bunny.obj")
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../../shared/meshes/bunny.obj")
 }
 
 impl ChartScene {
@@ -78,7 +79,8 @@ impl ChartScene {
             ChartScene::Alone => Ok(shapes_alone(width, height)),
             ChartScene::Ball(n) => Ok(ch07::shapes(n, width, height)),
             ChartScene::Bunny => {
-                let bunny = Mesh::load_obj(bunny)?.fitted(BALL_CENTRE, BALL_SIZE);
+                let bunny =
+                    Mesh::load_obj(bunny)?.fitted(BALL_CENTRE, BALL_SIZE);
                 let mut stage = shapes_alone(width, height);
                 let material = ball_material(&stage);
                 stage.add_mesh(&bunny, material);
@@ -100,7 +102,9 @@ impl ChartScene {
                 rounds: rounds.min(3),
                 batch: 1,
             },
-            ChartScene::Ball(3 | 4) | ChartScene::Bunny => Timing { rounds, batch: 1 },
+            ChartScene::Ball(3 | 4) | ChartScene::Bunny => {
+                Timing { rounds, batch: 1 }
+            }
             _ => TIMING.with_rounds(rounds),
         }
     }
@@ -123,10 +127,11 @@ pub fn steps(rounds: usize) -> u64 {
 
 /// `shapes.toml` alone at `width × height`.
 fn shapes_alone(width: u32, height: u32) -> Stage {
-    let mut scene =
-        raystep_scene::parse(SHAPES, "shapes.toml").expect("the chapter's scene parses");
+    let mut scene = raystep_scene::parse(SHAPES, "shapes.toml")
+        .expect("the chapter's scene parses");
     (scene.width, scene.height) = (width, height);
-    Stage::from_scene(&scene, "shapes.toml").expect("the chapter's scene builds")
+    Stage::from_scene(&scene, "shapes.toml")
+        .expect("the chapter's scene builds")
 }
 
 /// The index of the ball's material in `shapes.toml`.
@@ -201,7 +206,11 @@ pub fn chart_stages(bunny: &Path) -> Result<Vec<(ChartScene, Stage)>, String> {
         .into_iter()
         .map(|scene| Ok((scene, scene.stage(bunny)?)))
         .collect::<Result<Vec<_>, MeshError>>()
-        .map_err(|e| format!("{e} (the chart needs ../shared/meshes beside the workspace)"))?;
+        .map_err(|e| {
+            format!(
+                "{e} (the chart needs ../shared/meshes beside the workspace)"
+            )
+        })?;
     // back in chart order
     stages.rotate_left(1);
     Ok(stages)
@@ -212,7 +221,10 @@ pub fn chart_stages(bunny: &Path) -> Result<Vec<(ChartScene, Stage)>, String> {
 /// rounds, the median of single-threaded renders (measured), the two
 /// methods taking turns. `step` is called after each round of each stage,
 /// for a progress bar. An error names the bunny's file if it is missing.
-pub fn measure_scaling(rounds: usize, mut step: impl FnMut()) -> Result<Vec<ScalingRow>, String> {
+pub fn measure_scaling(
+    rounds: usize,
+    mut step: impl FnMut(),
+) -> Result<Vec<ScalingRow>, String> {
     let mut rows = Vec::new();
     for (scene, stage) in &chart_stages(&bunny_path())? {
         let mut counted = count(&scene.name(), stage);
@@ -234,13 +246,20 @@ pub fn measure_scaling(rounds: usize, mut step: impl FnMut()) -> Result<Vec<Scal
 }
 
 impl CsvRow for ScalingRow {
-    const HEADER: &'static str = "scene,triangles,method,tests,covered,shaded,millis";
+    const HEADER: &'static str =
+        "scene,triangles,method,tests,covered,shaded,millis";
 
     fn to_line(&self) -> String {
         let r = self;
         format!(
             "{},{},{},{},{},{},{:.4}",
-            r.scene, r.triangles, r.method, r.tests, r.covered, r.shaded, r.millis
+            r.scene,
+            r.triangles,
+            r.method,
+            r.tests,
+            r.covered,
+            r.shaded,
+            r.millis
         )
     }
 
@@ -250,11 +269,15 @@ impl CsvRow for ScalingRow {
             return Err(r.error(format!("unknown method `{method}`")));
         }
         // a log–log chart has no place for 0 ms or 0 triangles
-        let millis = r
-            .number(6, "millis")
-            .ok()
-            .filter(|&x| x > 0.0)
-            .ok_or_else(|| r.error(format!("millis `{}` is not a positive number", r.text(6))))?;
+        let millis =
+            r.number(6, "millis").ok().filter(|&x| x > 0.0).ok_or_else(
+                || {
+                    r.error(format!(
+                        "millis `{}` is not a positive number",
+                        r.text(6)
+                    ))
+                },
+            )?;
         let triangles = r.count(1, "triangles")?;
         if triangles == 0 {
             return Err(r.error("no triangles"));
@@ -296,13 +319,20 @@ mod tests {
 
     #[test]
     fn csv_round_trip_and_errors() {
-        let rows = vec![scaling_row(RASTERIZE, 1.25), scaling_row(RAYCAST, 1234.5)];
+        let rows =
+            vec![scaling_row(RASTERIZE, 1.25), scaling_row(RAYCAST, 1234.5)];
         let csv = to_csv(&rows);
-        assert!(csv.contains("\nball-2,332,rasterize,40000,9000,7000,1.2500\n"));
-        assert!(csv.contains("\nball-2,332,raycast,40000,9000,7000,1234.5000\n"));
+        assert!(
+            csv.contains("\nball-2,332,rasterize,40000,9000,7000,1.2500\n")
+        );
+        assert!(
+            csv.contains("\nball-2,332,raycast,40000,9000,7000,1234.5000\n")
+        );
         assert_eq!(from_csv(&csv).unwrap(), rows);
         assert!(from_csv("nope\n").unwrap_err().starts_with("line 1:"));
-        let bad = format!("{CSV_HEADER}\nshapes,12,raycast,1,1,1,1\nshapes,x,raycast,1,1,1,1\n");
+        let bad = format!(
+            "{CSV_HEADER}\nshapes,12,raycast,1,1,1,1\nshapes,x,raycast,1,1,1,1\n"
+        );
         assert_eq!(
             from_csv(&bad).unwrap_err(),
             "line 3: triangles `x` is not a count"
@@ -326,12 +356,13 @@ mod tests {
 
     #[test]
     fn the_balls_grow_by_four_from_the_scene_alone() {
-        let names: Vec<String> = chart_scenes().into_iter().map(ChartScene::name).collect();
+        let names: Vec<String> =
+            chart_scenes().into_iter().map(ChartScene::name).collect();
         assert_eq!(
             names,
             [
-                "shapes", "ball-0", "ball-1", "ball-2", "ball-3", "ball-4", "ball-5", "ball-6",
-                "bunny"
+                "shapes", "ball-0", "ball-1", "ball-2", "ball-3", "ball-4",
+                "ball-5", "ball-6", "bunny"
             ]
         );
         // shapes.toml: floor 2, pyramid 4, prism 2 gables + 2 quads of 2
@@ -376,7 +407,9 @@ mod tests {
         // per visible pixel and at most once per covered one
         assert!(raster.tests > raster.covered);
         assert!(raster.covered >= cast.covered);
-        assert!(raster.shaded >= cast.shaded && raster.shaded <= raster.covered);
+        assert!(
+            raster.shaded >= cast.shaded && raster.shaded <= raster.covered
+        );
     }
 
     /// The counts in the committed CSV are what the code computes now, on
@@ -385,7 +418,8 @@ mod tests {
     #[test]
     fn the_committed_counts_are_computed_by_the_code() {
         let committed: Vec<ScalingRow> =
-            raystep_figure::measured("ch07", "scaling.csv").expect("a good scaling.csv");
+            raystep_figure::measured("ch07", "scaling.csv")
+                .expect("a good scaling.csv");
         let find = |name: &str, method: &str| {
             committed
                 .iter()
@@ -418,7 +452,12 @@ mod tests {
         // every ray-cast row: each of 160 × 90 rays against each object,
         // one fewer object than triangles for each of the two quads
         for row in committed.iter().filter(|r| r.method == RAYCAST) {
-            assert_eq!(row.tests, 160 * 90 * (row.triangles - 2), "{}", row.scene);
+            assert_eq!(
+                row.tests,
+                160 * 90 * (row.triangles - 2),
+                "{}",
+                row.scene
+            );
         }
     }
 
@@ -426,6 +465,8 @@ mod tests {
     fn a_missing_bunny_is_named_before_any_stage_is_built() {
         let error = chart_stages(Path::new("no/such/bunny.obj")).unwrap_err();
         assert!(error.starts_with("no/such/bunny.obj: "), "{error}");
-        assert!(error.ends_with("(the chart needs ../shared/meshes beside the workspace)"));
+        assert!(error.ends_with(
+            "(the chart needs ../shared/meshes beside the workspace)"
+        ));
     }
 }

@@ -4,9 +4,11 @@ use ch07::Stage;
 /// The stage of a scene file's text at `width × height` (the camera is
 /// built for that proportion); `name` names the file in errors.
 pub fn stage_from(text: &str, name: &str, width: u32, height: u32) -> Stage {
-    let mut scene = raystep_scene::parse(text, name).expect("the test scene parses");
+    let mut scene =
+        raystep_scene::parse(text, name).expect("the test scene parses");
     (scene.width, scene.height) = (width, height);
-    Stage::from_scene(&scene, name).expect("the test scene's objects are all polygons")
+    Stage::from_scene(&scene, name)
+        .expect("the test scene's objects are all polygons")
 }
 
 /// The scene-file lines of one polygon object of material `material`.
