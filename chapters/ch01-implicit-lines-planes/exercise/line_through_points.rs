@@ -5,14 +5,17 @@
 use crate::{Degenerate, Line2};
 use raystep_core::DVec2;
 
+// ANCHOR: rotate90
 /// The rotation R by 90° counter-clockwise: `R·(x, y) = (−y, x)`.
 pub fn rotate90(v: DVec2) -> DVec2 {
     // TODO: turn v a quarter turn counter-clockwise.
     let _ = v;
     todo!()
 }
+// ANCHOR_END: rotate90
 
 impl Line2 {
+    // ANCHOR: through
     /// The line through `p0` and `p1`, directed from `p0` to `p1`.
     ///
     /// Fails with [`Degenerate`] when a coordinate is not finite, when the
@@ -27,11 +30,14 @@ impl Line2 {
         let _ = (p0, p1);
         todo!()
     }
+    // ANCHOR_END: through
 
+    // ANCHOR: eval
     /// `f(p) = a·x + b·y + c`: the signed distance of `p` from the line.
     pub fn eval(&self, p: DVec2) -> f64 {
         // TODO: evaluate the implicit equation at p.
         let _ = p;
         todo!()
     }
+    // ANCHOR_END: eval
 }

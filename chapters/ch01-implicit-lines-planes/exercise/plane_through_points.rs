@@ -5,6 +5,7 @@ use crate::{COLLINEAR_SINE, Degenerate, Plane};
 use raystep_core::DVec3;
 
 impl Plane {
+    // ANCHOR: through
     /// The plane through `p0`, `p1`, `p2`, with N = E₁×E₂/|E₁×E₂| (so
     /// the points run counter-clockwise seen from the side N points to).
     ///
@@ -24,11 +25,14 @@ impl Plane {
         let _ = (p0, p1, p2, COLLINEAR_SINE);
         todo!()
     }
+    // ANCHOR_END: through
 
+    // ANCHOR: eval
     /// `f(p) = N·p + d`: the signed distance of `p` from the plane.
     pub fn eval(&self, p: DVec3) -> f64 {
         // TODO: evaluate the implicit equation at p.
         let _ = p;
         todo!()
     }
+    // ANCHOR_END: eval
 }

@@ -5,6 +5,7 @@ use crate::owns_boundary;
 use ch01::rotate90;
 use raystep_core::DVec2;
 
+// ANCHOR: edge_function
 /// The edge function of the edge `a → b` at `p`: chapter 01's implicit
 /// line through `a` and `b` before normalising, `N = R·(b − a)` and
 /// `f(p) = N·(p − a)`. Positive to the left of the edge; it is the signed
@@ -23,7 +24,9 @@ pub fn edge_function(a: DVec2, b: DVec2, p: DVec2) -> f64 {
     let _ = (a, b, p, rotate90);
     todo!()
 }
+// ANCHOR_END: edge_function
 
+// ANCHOR: inside_convex
 /// Is `p` inside the convex polygon whose vertices `ccw` run
 /// counter-clockwise? Inside means on the inner side of every edge: f ≥ 0
 /// for all of them, where f = 0 counts only if the polygon owns that edge
@@ -36,3 +39,4 @@ pub fn inside_convex(ccw: &[DVec2], p: DVec2) -> bool {
     let _ = (ccw, p, owns_boundary);
     todo!()
 }
+// ANCHOR_END: inside_convex

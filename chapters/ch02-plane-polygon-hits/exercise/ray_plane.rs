@@ -5,6 +5,7 @@ use crate::{RayPlane, zero_within_rounding};
 use ch01::Plane;
 use raystep_core::{Interval, Ray};
 
+// ANCHOR: ray_plane
 /// Classifies how `ray` meets `plane`, accepting hits with `t` in `interval`.
 pub fn ray_plane(plane: &Plane, ray: &Ray, interval: Interval) -> RayPlane {
     // TODO: t = −(N·P0 + d) / (N·D), with the lecture's cases:
@@ -19,3 +20,4 @@ pub fn ray_plane(plane: &Plane, ray: &Ray, interval: Interval) -> RayPlane {
     let _ = (plane, ray, interval, zero_within_rounding);
     todo!()
 }
+// ANCHOR_END: ray_plane

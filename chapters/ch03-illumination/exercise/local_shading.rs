@@ -5,6 +5,7 @@ use crate::{LightSample, ShadingTerms, reflect_light};
 use raystep_core::DVec3;
 use raystep_scene::Material;
 
+// ANCHOR: shading_terms
 /// The local model at a surface point, term by term:
 ///
 /// L = ka·Ia + Σᵢ Sᵢ·Iᵢ·[kd·(N·Lᵢ) + ks·(Rᵢ·V)^p]
@@ -27,3 +28,4 @@ pub fn shading_terms(
     let _ = (material, normal, to_eye, ambient, lights, reflect_light);
     todo!()
 }
+// ANCHOR_END: shading_terms

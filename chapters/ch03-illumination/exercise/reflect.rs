@@ -3,6 +3,7 @@
 //! Fill in `reflect_light`; `cargo run --release -- check ch03` judges it.
 use raystep_core::DVec3;
 
+// ANCHOR: reflect
 /// The lecture's Rᵢ: the direction to light `l` mirrored about the normal
 /// `n`, R = 2(N·L)N − L. Both unit vectors pointing away from the surface;
 /// R comes out unit too, at the same angle to N as L on the other side.
@@ -12,3 +13,4 @@ pub fn reflect_light(l: DVec3, n: DVec3) -> DVec3 {
     let _ = (l, n);
     todo!()
 }
+// ANCHOR_END: reflect

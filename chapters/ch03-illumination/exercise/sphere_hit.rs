@@ -5,6 +5,7 @@ use crate::Sphere;
 use raystep_core::{Hit, Interval, Ray};
 
 impl Sphere {
+    // ANCHOR: intersect
     /// The first hit of `ray` with the sphere whose `t` lies in `interval`.
     ///
     /// Solves |P₀ + t·D − C|² = r², a quadratic a·t² − 2b·t + c = 0 with
@@ -24,4 +25,5 @@ impl Sphere {
         let _ = (ray, interval);
         todo!()
     }
+    // ANCHOR_END: intersect
 }

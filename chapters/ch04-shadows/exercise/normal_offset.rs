@@ -3,6 +3,7 @@
 //! Fill in `normal_offset_ray`; `cargo run --release -- check ch04` judges it.
 use raystep_core::{DVec3, Interval, Ray};
 
+// ANCHOR: normal_offset_ray
 /// Strategy 2: the shadow ray from `point` toward `light_position`, its
 /// origin moved the fixed distance `epsilon` along the unit `normal` (the
 /// normal on the light's side).
@@ -26,3 +27,4 @@ pub fn normal_offset_ray(
     let _ = (point, normal, light_position, epsilon);
     todo!()
 }
+// ANCHOR_END: normal_offset_ray

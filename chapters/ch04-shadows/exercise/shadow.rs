@@ -6,6 +6,7 @@ use ch03::World;
 use raystep_core::{DVec3, Hit};
 use raystep_scene::Light;
 
+// ANCHOR: shadow
 /// Sᵢ for `light` at `hit`: 1 if the light reaches the point, 0 if it is
 /// in shadow.
 ///
@@ -30,3 +31,4 @@ pub fn shadow(
     let _ = (world, hit, normal, light, offset, occluded, shadow_ray);
     todo!()
 }
+// ANCHOR_END: shadow
