@@ -194,10 +194,11 @@ fn link_targets(line: &str) -> Vec<&str> {
         search = end;
     }
     let trimmed = line.trim_start();
-    if trimmed.starts_with('[') && !trimmed.starts_with("[^") {
-        if let Some((_, target)) = trimmed.split_once("]: ") {
-            targets.push(target.split_whitespace().next().unwrap_or(""));
-        }
+    if trimmed.starts_with('[')
+        && !trimmed.starts_with("[^")
+        && let Some((_, target)) = trimmed.split_once("]: ")
+    {
+        targets.push(target.split_whitespace().next().unwrap_or(""));
     }
     for attribute in ["src=\"", "href=\""] {
         let mut search = 0;

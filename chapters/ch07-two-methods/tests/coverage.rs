@@ -315,7 +315,7 @@ fn grid() -> Vec<[DVec2; 3]> {
                 [[tr, br, bl], [tr, bl, tl]] // split on the ↙ diagonal
             };
             for (k, t) in halves.into_iter().enumerate() {
-                triangles.push(if (i + j + k as u32) % 2 == 0 {
+                triangles.push(if (i + j + k as u32).is_multiple_of(2) {
                     t
                 } else {
                     reversed(&t)

@@ -322,14 +322,13 @@ pub fn test_executables(messages: &str) -> Vec<Executable> {
 fn test_stem(source: &str) -> String {
     let path = Path::new(source);
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or(source);
-    if stem == "main" {
-        if let Some(dir) = path
+    if stem == "main"
+        && let Some(dir) = path
             .parent()
             .and_then(|p| p.file_name())
             .and_then(|s| s.to_str())
-        {
-            return dir.to_string();
-        }
+    {
+        return dir.to_string();
     }
     stem.to_string()
 }

@@ -55,10 +55,10 @@ impl Chapter {
         let mut stems = Vec::new();
         for entry in entries {
             let path = entry.map_err(|e| Error::io(&dir, e))?.path();
-            if path.extension().is_some_and(|ext| ext == "rs") {
-                if let Some(stem) = path.file_stem().and_then(|s| s.to_str()) {
-                    stems.push(stem.to_string());
-                }
+            if path.extension().is_some_and(|ext| ext == "rs")
+                && let Some(stem) = path.file_stem().and_then(|s| s.to_str())
+            {
+                stems.push(stem.to_string());
             }
         }
         stems.sort();

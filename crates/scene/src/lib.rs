@@ -332,10 +332,10 @@ pub fn parse(source: &str, file_name: &str) -> Result<Scene, SceneError> {
         let span = e.span().unwrap_or(0..0);
         let (line, column) = error::line_column(source, span.start);
         let mut message = e.message().to_owned();
-        if message == "duplicate key" {
-            if let Some(key) = source.get(span) {
-                message = format!("duplicate key `{key}`");
-            }
+        if message == "duplicate key"
+            && let Some(key) = source.get(span)
+        {
+            message = format!("duplicate key `{key}`");
         }
         SceneError::Syntax {
             file: file_name.to_owned(),
