@@ -1,5 +1,6 @@
 //! `raystep`: the lecture's command line.
 //!
+//! * `raystep book` builds the book (figures and HTML) and says where it is;
 //! * `raystep figures` draws every lecture figure into `book/src/figures/`
 //!   (`--check` compares instead of writing);
 //! * `raystep measure` times the renders behind the charts (slow) and
@@ -8,6 +9,7 @@
 //! * `raystep check ch01` runs a chapter's tests in student mode and says,
 //!   exercise by exercise, what passes.
 
+mod book;
 mod chapters;
 mod check;
 mod figures;
@@ -32,6 +34,22 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
+    /// Build the book: draw every figure, then the HTML pages (with typeset
+    /// math and the exercises' solutions folded), and say where it is.
+    Book {
+        /// The folder to write the HTML book into [default: <workspace>/target/book].
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+        /// Open the book in the default browser when it is built.
+        #[arg(long)]
+        open: bool,
+    },
+    /// mdBook's preprocessor protocol (book/book.toml runs it for `mdbook serve book`).
+    #[command(hide = true)]
+    BookPreprocessor {
+        /// `supports RENDERER`, or nothing (the book comes as JSON on stdin).
+        args: Vec<String>,
+    },
     /// Draw every lecture figure into the book (or check the committed ones).
     Figures {
         /// Only this chapter: `01`, `1` or `ch01`.
@@ -222,6 +240,8 @@ fn main() -> ExitCode {
         }
     };
     let result = match cli.command {
+        Command::Book { out, open } => book::run(&book::Options { out, open }),
+        Command::BookPreprocessor { args } => book::preprocessor(&args),
         Command::Figures {
             chapter,
             out,
