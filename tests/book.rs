@@ -8,6 +8,8 @@ use std::fmt;
 use std::fs;
 use std::path::{Component, Path, PathBuf};
 
+use raystep_book::include;
+
 /// Reads the files a page refers to; a map stands in for the disk in unit tests.
 trait Files {
     fn exists(&self, path: &Path) -> bool;
@@ -78,8 +80,9 @@ fn problems(page: &Path, text: &str, files: &dyn Files) -> Vec<Problem> {
             })
         };
         // mdbook expands includes everywhere, code blocks included.
-        for (directive, argument) in includes(line) {
-            if let Err(message) = check_include(dir, argument, files) {
+        for found in include::includes(line) {
+            if let Err(message) = check_include(dir, &found, files) {
+                let (directive, argument) = (found.directive, found.argument);
                 report(format!("{{{{#{directive} {argument}}}}}: {message}"));
             }
         }
@@ -108,75 +111,23 @@ fn problems(page: &Path, text: &str, files: &dyn Files) -> Vec<Problem> {
     found
 }
 
-/// The `{{#include …}}` and `{{#rustdoc_include …}}` directives of a line:
-/// (directive, argument). Escaped ones (`\{{#include …}}`) are skipped, as mdbook does.
-fn includes(line: &str) -> Vec<(&str, &str)> {
-    let mut found = Vec::new();
-    let mut rest = line;
-    let mut offset = 0;
-    while let Some(start) = rest.find("{{#") {
-        let escaped = line[..offset + start].ends_with('\\');
-        let after = &rest[start + 3..];
-        let Some(end) = after.find("}}") else { break };
-        let body = after[..end].trim();
-        let (directive, argument) =
-            body.split_once(char::is_whitespace).unwrap_or((body, ""));
-        if !escaped && matches!(directive, "include" | "rustdoc_include") {
-            found.push((directive, argument.trim()));
-        }
-        offset += start + 3 + end + 2;
-        rest = &line[offset..];
-    }
-    found
-}
-
-/// Checks `path`, `path:anchor`, `path:N`, `path:N:M`, `path::M`, `path:N:`.
+/// Checks `path`, `path:anchor`, `path:N`, `path:N:M`, `path::M`, `path:N:`
+/// the way the book reads them (`raystep_book::include`).
 fn check_include(
     dir: &Path,
-    argument: &str,
+    include: &include::Include,
     files: &dyn Files,
 ) -> Result<(), String> {
-    let (path, selector) = argument.split_once(':').unwrap_or((argument, ""));
+    let path = include.path();
     if path.is_empty() {
         return Err("no file named".into());
     }
     let Some(text) = files.read(&dir.join(path)) else {
         return Err(format!("{path} does not exist"));
     };
-    if selector.is_empty() {
-        return Ok(());
-    }
-    if selector.bytes().all(|b| b.is_ascii_digit() || b == b':') {
-        let first: usize = selector
-            .split(':')
-            .find(|n| !n.is_empty())
-            .and_then(|n| n.parse().ok())
-            .unwrap_or(1);
-        let lines = text.lines().count();
-        return if first <= lines.max(1) {
-            Ok(())
-        } else {
-            Err(format!("{path} has only {lines} lines"))
-        };
-    }
-    let has = |marker: &str| {
-        text.lines().any(|l| anchor_of(l, marker) == Some(selector))
-    };
-    match (has("ANCHOR:"), has("ANCHOR_END:")) {
-        (true, true) => Ok(()),
-        (false, false) => Err(format!("no anchor `{selector}` in {path}")),
-        (true, false) => Err(format!("no `ANCHOR_END: {selector}` in {path}")),
-        (false, true) => Err(format!("no `ANCHOR: {selector}` in {path}")),
-    }
-}
-
-/// The anchor name after `marker` on a line, as mdbook reads it (`[\w-]+`).
-fn anchor_of<'a>(line: &'a str, marker: &str) -> Option<&'a str> {
-    let rest = line[line.find(marker)? + marker.len()..].trim_start();
-    let end = rest
-        .find(|c: char| !(c.is_alphanumeric() || c == '_' || c == '-'))
-        .unwrap_or(rest.len());
-    (end > 0).then(|| &rest[..end])
+    include::select(&text, include.selector())
+        .map(|_| ())
+        .map_err(|message| format!("{path}: {message}"))
 }
 
 /// Link and image targets of a line: `[text](target "title")`, `[label]: target`,
@@ -341,7 +292,7 @@ mod parsing {
             check(page),
             [
                 "book/src/ch01.md:3: {{#include ../../chapters/ch01/src/line.rs:plane}}: \
-              no anchor `plane` in ../../chapters/ch01/src/line.rs"
+              ../../chapters/ch01/src/line.rs: no anchor `plane`"
             ]
         );
     }
@@ -353,7 +304,7 @@ mod parsing {
             check(page),
             [
                 "book/src/ch01.md:1: {{#rustdoc_include ../../chapters/ch01/src/line.rs:half}}: \
-              no `ANCHOR_END: half` in ../../chapters/ch01/src/line.rs"
+              ../../chapters/ch01/src/line.rs: no `ANCHOR_END: half`"
             ]
         );
     }
@@ -410,7 +361,7 @@ mod parsing {
             check("{{#include ../../chapters/ch01/src/line.rs:40:}}"),
             [
                 "book/src/ch01.md:1: {{#include ../../chapters/ch01/src/line.rs:40:}}: \
-              ../../chapters/ch01/src/line.rs has only 5 lines"
+              ../../chapters/ch01/src/line.rs: no lines 40: (the file has 5)"
             ]
         );
     }

@@ -26,6 +26,8 @@ pub struct Options {
     pub out: Option<PathBuf>,
     /// Open the first page in the default browser afterwards.
     pub open: bool,
+    /// Draw the figures first (else use book/src/figures as it is).
+    pub figures: bool,
 }
 
 /// The fonts the book's stylesheet (book/raystep.css) loads from the
@@ -58,17 +60,19 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     };
 
     // Step 1: the figures, drawn from the code.
-    let figures = crate::figures::default_out(&root);
-    let mut count = 0;
-    for chapter in CHAPTERS {
-        let written = raystep_figure::write_all(
-            &chapter.all_figures(),
-            &figures.join(chapter.id),
-            raystep_figure::Format::Both,
-        )?;
-        count += written.len();
+    if options.figures {
+        let figures = crate::figures::default_out(&root);
+        let mut count = 0;
+        for chapter in CHAPTERS {
+            let written = raystep_figure::write_all(
+                &chapter.all_figures(),
+                &figures.join(chapter.id),
+                raystep_figure::Format::Both,
+            )?;
+            count += written.len();
+        }
+        println!("drew {count} figure files into {}", shown(&figures));
     }
-    println!("drew {count} figure files into {}", shown(&figures));
 
     // Step 2: the pages, through mdBook with the book's preprocessing.
     let book_dir = root.join("book");

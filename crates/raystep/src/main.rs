@@ -43,6 +43,9 @@ enum Command {
         /// Open the book in the default browser when it is built.
         #[arg(long)]
         open: bool,
+        /// Use the figures in book/src/figures as they are (do not redraw them).
+        #[arg(long)]
+        no_figures: bool,
     },
     /// mdBook's preprocessor protocol (book/book.toml runs it for `mdbook serve book`).
     #[command(hide = true)]
@@ -240,7 +243,15 @@ fn main() -> ExitCode {
         }
     };
     let result = match cli.command {
-        Command::Book { out, open } => book::run(&book::Options { out, open }),
+        Command::Book {
+            out,
+            open,
+            no_figures,
+        } => book::run(&book::Options {
+            out,
+            open,
+            figures: !no_figures,
+        }),
         Command::BookPreprocessor { args } => book::preprocessor(&args),
         Command::Figures {
             chapter,
