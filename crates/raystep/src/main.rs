@@ -8,11 +8,16 @@
 //! * `raystep check ch01` runs a chapter's tests in student mode and says,
 //!   exercise by exercise, what passes.
 
+mod atomic_file;
 mod chapters;
 mod check;
 mod figures;
 mod measure;
 mod render;
+mod report_formats;
+mod snapshot_changes;
+mod snapshot_diff;
+mod snapshot_table;
 mod workspace;
 
 use std::io;
@@ -83,10 +88,15 @@ enum Command {
     /// `exercise` feature unless `--reference`); raystep then runs each test
     /// binary itself, one after the other: the unit tests (the library's
     /// first), then `tests/*.rs` by name.
-    /// Each exercise gets one verdict: `passed`, `failed: <test>: <message>`,
-    /// `not attempted` (every failing test stopped at `todo!()`) or `timed out
-    /// after N s`. The verdicts do not depend on cargo's `term` settings.
-    /// Doc tests are not run (the chapters have none).
+    /// Each exercise gets one verdict: `passed`, `failed: <test>
+    /// (<file>:<line>): <message>` (for a snapshot table, the first row whose
+    /// values differ), `not attempted` (every failing test stopped at
+    /// `todo!()`) or `timed out after N s`; the chapter's other tests are
+    /// counted as passed, waiting for the exercises (`todo!()`) or failed.
+    /// No snapshot is ever written or accepted, and snapshot files that
+    /// differ from git's `HEAD` (or insta's `.snap.new` proposals) are named.
+    /// The verdicts do not depend on cargo's `term` settings or insta's
+    /// variables. Doc tests are not run (the chapters have none).
     Check {
         /// The chapter: `ch01`, `01` or `1`.
         chapter: String,
@@ -104,6 +114,13 @@ enum Command {
         /// Do not echo cargo's progress on stderr.
         #[arg(long, short)]
         quiet: bool,
+        /// Also write the report as JSON to this file.
+        #[arg(long, value_name = "FILE")]
+        json: Option<PathBuf>,
+        /// Also write the report as JUnit XML to this file (one test case
+        /// per exercise, one for the other tests).
+        #[arg(long, value_name = "FILE")]
+        junit: Option<PathBuf>,
     },
 }
 
@@ -131,6 +148,16 @@ fn seconds(arg: &str) -> Result<f64, String> {
         Ok(s) if s > 0.0 && Duration::try_from_secs_f64(s).is_ok() => Ok(s),
         _ => Err("expected a positive number of seconds".to_string()),
     }
+}
+
+/// `--target-dir`, else `RAYSTEP_CHECK_TARGET_DIR`, as an absolute path
+/// (cargo runs in the workspace root: a relative folder means the current
+/// one).
+fn check_target_dir(arg: Option<PathBuf>) -> Option<PathBuf> {
+    arg.or_else(|| {
+        std::env::var_os("RAYSTEP_CHECK_TARGET_DIR").map(PathBuf::from)
+    })
+    .map(|dir| std::path::absolute(&dir).unwrap_or(dir))
 }
 
 /// Everything that stops a command; shown as one line on stderr.
@@ -261,18 +288,16 @@ fn main() -> ExitCode {
             target_dir,
             timeout,
             quiet,
+            json,
+            junit,
         } => check::run(&check::Options {
             chapter,
             reference,
-            target_dir: target_dir
-                .or_else(|| {
-                    std::env::var_os("RAYSTEP_CHECK_TARGET_DIR")
-                        .map(PathBuf::from)
-                })
-                // Cargo runs in the workspace root: a relative folder means the current one.
-                .map(|dir| std::path::absolute(&dir).unwrap_or(dir)),
+            target_dir: check_target_dir(target_dir),
             timeout: Duration::from_secs_f64(timeout),
             quiet,
+            json,
+            junit,
         }),
     };
     match result {
