@@ -173,6 +173,16 @@ pub fn check_chapter(
     Ok(report)
 }
 
+/// Only builds the tests of `chapter` (as [`check_chapter`] does): why
+/// nothing could be built, or `None` if it built.
+pub fn build_failure(
+    root: &Path,
+    chapter: &Chapter,
+    run: &Run,
+) -> Result<Option<BuildFailure>, Error> {
+    Ok(build(&cargo_program(), root, chapter.package, run)?.err())
+}
+
 /// The text of every `tests/*.rs` of the package in `dir`, by file stem: to
 /// put failing tests in source order.
 fn test_sources(dir: &Path) -> HashMap<String, String> {

@@ -6,12 +6,15 @@
 //!   writes CSV beside the figures;
 //! * `raystep render SCENE.toml` renders a scene file to a PNG;
 //! * `raystep check ch01` runs a chapter's tests in student mode and says,
-//!   exercise by exercise, what passes.
+//!   exercise by exercise, what passes;
+//! * `raystep grade SUBMISSIONS --chapter ch01` checks every student's
+//!   exercise files in a scratch copy of the workspace, into one table.
 
 mod atomic_file;
 mod chapters;
 mod check;
 mod figures;
+mod grade;
 mod measure;
 mod render;
 mod report_formats;
@@ -19,6 +22,7 @@ mod snapshot_changes;
 mod snapshot_diff;
 mod snapshot_table;
 mod workspace;
+mod workspace_copy;
 
 use std::io;
 use std::path::{Path, PathBuf};
@@ -121,6 +125,42 @@ enum Command {
         /// per exercise, one for the other tests).
         #[arg(long, value_name = "FILE")]
         junit: Option<PathBuf>,
+    },
+    /// Check every student's exercise files in a scratch copy of the
+    /// workspace, into one table of verdicts.
+    ///
+    /// The students are checked one after the other, by folder name.
+    /// SUBMISSIONS holds one folder per student. A student's files are
+    /// `<student>/exercise/<exercise>.rs` or `<student>/<exercise>.rs`
+    /// (the first if both exist), named after the chapter's exercises;
+    /// every other file is ignored and reported. Before each student the
+    /// chapter's `exercise/` and `tests/snapshots/` are restored from this
+    /// workspace, which is never changed. An exercise without a file is
+    /// `missing file` (its stub is used, so the others are still judged);
+    /// a file that does not compile is `does not compile` (its stub is then
+    /// used for the others).
+    Grade {
+        /// The folder of submissions, one folder per student.
+        submissions: PathBuf,
+        /// The chapter: `ch01`, `01` or `1`.
+        #[arg(long, value_name = "CHAPTER")]
+        chapter: String,
+        /// The CSV table to write (student, exercise, verdict, message).
+        #[arg(long, value_name = "FILE.csv", default_value = "grades.csv")]
+        out: PathBuf,
+        /// Also write the table as JSON to this file.
+        #[arg(long, value_name = "FILE")]
+        json: Option<PathBuf>,
+        /// Kill a test binary still running after this many seconds; its
+        /// exercise is `timed out`.
+        #[arg(long, value_name = "SECS", value_parser = seconds,
+              default_value_t = check::DEFAULT_TIMEOUT_SECS as f64)]
+        timeout: f64,
+        /// Build in this target directory, kept for the next run [env:
+        /// RAYSTEP_CHECK_TARGET_DIR; default: one inside the scratch copy,
+        /// removed at the end].
+        #[arg(long, value_name = "DIR")]
+        target_dir: Option<PathBuf>,
     },
 }
 
@@ -298,6 +338,21 @@ fn main() -> ExitCode {
             quiet,
             json,
             junit,
+        }),
+        Command::Grade {
+            submissions,
+            chapter,
+            out,
+            json,
+            timeout,
+            target_dir,
+        } => grade::run(&grade::Options {
+            submissions,
+            chapter,
+            out,
+            json,
+            timeout: Duration::from_secs_f64(timeout),
+            target_dir: check_target_dir(target_dir),
         }),
     };
     match result {
