@@ -8,7 +8,9 @@
 //! * `raystep check ch01` runs a chapter's tests in student mode and says,
 //!   exercise by exercise, what passes;
 //! * `raystep grade SUBMISSIONS --chapter ch01` checks every student's
-//!   exercise files in a scratch copy of the workspace, into one table.
+//!   exercise files in a scratch copy of the workspace, into one table;
+//! * `raystep student-edition OUT` writes the workspace with only the
+//!   exercise stubs, for students.
 
 mod atomic_file;
 mod chapters;
@@ -21,6 +23,7 @@ mod report_formats;
 mod snapshot_changes;
 mod snapshot_diff;
 mod snapshot_table;
+mod student_edition;
 mod workspace;
 mod workspace_copy;
 
@@ -161,6 +164,20 @@ enum Command {
         /// removed at the end].
         #[arg(long, value_name = "DIR")]
         target_dir: Option<PathBuf>,
+    },
+    /// Write a copy of the workspace for students, without the solutions.
+    ///
+    /// Every exercise module holds its stub: no reference solution is
+    /// anywhere in the copy.
+    /// For every chapter and exercise `e`, `chapters/<ch>/src/<e>.rs` gets
+    /// the text of `chapters/<ch>/exercise/<e>.rs`, and a chapter's
+    /// `exercise` feature turns on the one of the chapters it builds on
+    /// (so later chapters run on the student's earlier exercises). Build
+    /// output (`target/`, `book/book/`) and `.git` are left out; a new git
+    /// repository with one commit is made if `git` is installed.
+    StudentEdition {
+        /// The folder to create; it must not exist or be empty.
+        out: PathBuf,
     },
 }
 
@@ -354,6 +371,7 @@ fn main() -> ExitCode {
             timeout: Duration::from_secs_f64(timeout),
             target_dir: check_target_dir(target_dir),
         }),
+        Command::StudentEdition { out } => student_edition::run(&out),
     };
     match result {
         Ok(code) => code,
