@@ -29,9 +29,12 @@ use std::process::{Child, Command, ExitCode, ExitStatus, Stdio};
 use std::sync::{Arc, Mutex, mpsc};
 use std::time::{Duration, Instant};
 
+use raystep_figure::Chapter;
 use serde::Deserialize;
 
-use crate::{Error, workspace};
+use crate::snapshot_changes::{self, ChangedSnapshot};
+use crate::snapshot_diff::{InstaFailure, snapshot_contents};
+use crate::{Error, report_formats, workspace};
 
 /// What `raystep check` was asked to do.
 #[derive(Debug)]
@@ -43,6 +46,24 @@ pub struct Options {
     /// Build in this target directory instead of cargo's default.
     pub target_dir: Option<PathBuf>,
     /// Do not echo cargo's build progress.
+    pub quiet: bool,
+    /// How long one test binary may run before it is killed.
+    pub timeout: Duration,
+    /// Also write the report as JSON to this file.
+    pub json: Option<PathBuf>,
+    /// Also write the report as JUnit XML to this file.
+    pub junit: Option<PathBuf>,
+}
+
+/// How to build and run one chapter's tests (`raystep check` and `raystep
+/// grade` alike).
+#[derive(Debug, Clone)]
+pub struct Run {
+    /// Test the reference solution (no `exercise` feature).
+    pub reference: bool,
+    /// Build in this target directory instead of cargo's default.
+    pub target_dir: Option<PathBuf>,
+    /// Do not echo cargo's build progress or the binaries run.
     pub quiet: bool,
     /// How long one test binary may run before it is killed.
     pub timeout: Duration,
@@ -66,17 +87,9 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     let root = workspace::root();
     let chapter =
         crate::chapters::find(&options.chapter, crate::chapters::CHAPTERS)?;
-    let dir = root.join("chapters").join(chapter.package);
-    let exercises: Vec<String> =
-        chapter.exercises.iter().map(|e| e.to_string()).collect();
-    let sources: HashMap<String, String> = exercises
-        .iter()
-        .filter_map(|e| {
-            let path = dir.join("tests").join(format!("{e}.rs"));
-            Some((e.clone(), std::fs::read_to_string(path).ok()?))
-        })
-        .collect();
-
+    for path in options.json.iter().chain(&options.junit) {
+        crate::atomic_file::can_write(path)?;
+    }
     let mode = if options.reference {
         "reference solution"
     } else {
@@ -84,38 +97,107 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     };
     if !options.quiet {
         eprintln!(
-            "building and running the tests of {} ({mode})…",
+            "building the tests of {} ({mode}); the first build takes a few \
+             minutes…",
             chapter.package
         );
     }
-    let cargo = cargo_program();
-    let built = build(&cargo, &root, chapter.package, options)?;
-
-    println!("{} ({mode})", chapter.package);
-    let executables = match built {
-        Ok(executables) => executables,
-        Err(failure) => {
-            println!("  {failure}");
-            return Ok(ExitCode::FAILURE);
-        }
+    let run = Run {
+        reference: options.reference,
+        target_dir: options.target_dir.clone(),
+        quiet: options.quiet,
+        timeout: options.timeout,
     };
-    let threads = test_threads();
-    let binaries: Vec<TestBinary> = executables
-        .iter()
-        .map(|executable| {
-            if !options.quiet {
-                eprintln!("     Running {}", executable.target);
-            }
-            run_tests(executable, &cargo, options.timeout, threads)
-        })
-        .collect();
-    let report = report(&exercises, &binaries, &sources);
+    let report = check_chapter(&root, chapter, &run)?;
+    println!("{} ({mode})", chapter.package);
     print!("{report}");
+    let heading = report_formats::Heading {
+        chapter: chapter.id,
+        package: chapter.package,
+        reference: options.reference,
+    };
+    if let Some(path) = &options.json {
+        report_formats::write_json(path, &heading, &report)?;
+    }
+    if let Some(path) = &options.junit {
+        report_formats::write_junit(path, &heading, &report)?;
+    }
     Ok(if report.all_passed() {
         ExitCode::SUCCESS
     } else {
         ExitCode::FAILURE
     })
+}
+
+/// Builds and runs the tests of `chapter` in the workspace at `root`, and
+/// judges each exercise. Only cargo failing to start is an error; a build
+/// that fails is a report whose exercises do not compile.
+pub fn check_chapter(
+    root: &Path,
+    chapter: &Chapter,
+    run: &Run,
+) -> Result<Report, Error> {
+    let dir = root.join("chapters").join(chapter.package);
+    let exercises: Vec<String> =
+        chapter.exercises.iter().map(|e| e.to_string()).collect();
+    let cargo = cargo_program();
+    let built = build(&cargo, root, chapter.package, run)?;
+    let mut report = match built {
+        Ok(executables) => {
+            let threads = test_threads();
+            let context = Context {
+                workspace: Some(root.to_path_buf()),
+                package: Some(dir.clone()),
+            };
+            let binaries: Vec<TestBinary> = executables
+                .iter()
+                .map(|executable| {
+                    if !run.quiet {
+                        eprintln!("     Running {}", executable.target);
+                    }
+                    run_tests(
+                        executable,
+                        &cargo,
+                        run.timeout,
+                        threads,
+                        &context,
+                    )
+                })
+                .collect();
+            report(&exercises, &binaries, &test_sources(&dir))
+        }
+        Err(failure) => Report::not_built(&exercises, failure),
+    };
+    report.changed_snapshots = snapshot_changes::changed_snapshots(&dir);
+    report.package_dir = crate::relative(&dir);
+    Ok(report)
+}
+
+/// Only builds the tests of `chapter` (as [`check_chapter`] does): why
+/// nothing could be built, or `None` if it built.
+pub fn build_failure(
+    root: &Path,
+    chapter: &Chapter,
+    run: &Run,
+) -> Result<Option<BuildFailure>, Error> {
+    Ok(build(&cargo_program(), root, chapter.package, run)?.err())
+}
+
+/// The text of every `tests/*.rs` of the package in `dir`, by file stem: to
+/// put failing tests in source order.
+fn test_sources(dir: &Path) -> HashMap<String, String> {
+    let Ok(entries) = std::fs::read_dir(dir.join("tests")) else {
+        return HashMap::new();
+    };
+    entries
+        .flatten()
+        .map(|entry| entry.path())
+        .filter(|path| path.extension().is_some_and(|x| x == "rs"))
+        .filter_map(|path| {
+            let stem = path.file_stem()?.to_str()?.to_string();
+            Some((stem, std::fs::read_to_string(&path).ok()?))
+        })
+        .collect()
 }
 
 /// The cargo that runs raystep (`cargo run` sets `CARGO`), else `cargo` on the path.
@@ -129,8 +211,8 @@ fn build(
     cargo: &str,
     root: &Path,
     package: &str,
-    options: &Options,
-) -> Result<Result<Vec<Executable>, CargoFailure>, Error> {
+    options: &Run,
+) -> Result<Result<Vec<Executable>, BuildFailure>, Error> {
     let mut command = Command::new(cargo);
     command.current_dir(root).args([
         "test",
@@ -159,6 +241,7 @@ fn build(
     if let Some(dir) = &options.target_dir {
         command.env("CARGO_TARGET_DIR", dir);
     }
+    command.args(separate_artifacts(root, options.target_dir.as_deref()));
     let spawn_error = |source| Error::Spawn {
         program: cargo.to_string(),
         source,
@@ -186,15 +269,93 @@ fn build(
     let status = child.wait().map_err(spawn_error)?;
     read.map_err(spawn_error)?;
     if !status.success() {
-        return Ok(Err(cargo_failure(&stderr)));
+        return Ok(Err(BuildFailure {
+            failure: cargo_failure(&stderr),
+            errors: compile_errors(&stderr),
+        }));
     }
     let executables = test_executables(&stdout);
     if executables.is_empty() {
-        return Ok(Err(CargoFailure::Cargo(
-            "cargo built no test binaries".to_string(),
-        )));
+        return Ok(Err(BuildFailure {
+            failure: CargoFailure::Cargo(
+                "cargo built no test binaries".to_string(),
+            ),
+            errors: Vec::new(),
+        }));
     }
     Ok(Ok(executables))
+}
+
+/// Cargo's arguments that keep this workspace's own artifacts apart in a
+/// target folder that is not its own (`--target-dir`, `CARGO_TARGET_DIR`).
+///
+/// Cargo names the artifacts of a workspace's crates by their paths
+/// *inside* the workspace, so copies of one workspace (`raystep grade`'s
+/// scratch copy, a student edition) that build into one target folder
+/// share artifacts, and cargo judges them fresh by file times alone: one
+/// copy could run another's build of a student's code, or a test binary
+/// with another copy's folder baked in (`env!("CARGO_MANIFEST_DIR")`, which
+/// insta uses to find the snapshots). Built with a setting of their own
+/// (`codegen-units = 256`, which changes how rustc splits the work, not
+/// what the code does), the workspace's crates get artifacts of their own;
+/// dependencies from crates.io are still shared. Nothing is added when the
+/// target folder is the workspace's `target/` (the usual case), or when the
+/// members cannot be read.
+pub fn separate_artifacts(
+    root: &Path,
+    target_dir: Option<&Path>,
+) -> Vec<String> {
+    let target = target_dir
+        .map(Path::to_path_buf)
+        .or_else(|| std::env::var_os("CARGO_TARGET_DIR").map(PathBuf::from))
+        .map(|dir| {
+            if dir.is_absolute() {
+                dir
+            } else {
+                root.join(dir)
+            }
+        });
+    let own = root.join("target");
+    let same = |a: &Path, b: &Path| match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => lexically_normal(a) == lexically_normal(b),
+    };
+    match target {
+        Some(target) if !same(&target, &own) => workspace_members(root)
+            .iter()
+            .flat_map(|name| {
+                [
+                    "--config".to_string(),
+                    format!("profile.dev.package.\"{name}\".codegen-units=256"),
+                ]
+            })
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// The package names of the workspace's members (its root `Cargo.toml`
+/// lists them by folder); empty if a manifest cannot be read.
+fn workspace_members(root: &Path) -> Vec<String> {
+    let read = |path: PathBuf| -> Option<toml::Table> {
+        std::fs::read_to_string(path).ok()?.parse().ok()
+    };
+    let Some(manifest) = read(root.join("Cargo.toml")) else {
+        return Vec::new();
+    };
+    let members = manifest
+        .get("workspace")
+        .and_then(|w| w.get("members"))
+        .and_then(|m| m.as_array())
+        .cloned()
+        .unwrap_or_default();
+    members
+        .iter()
+        .filter_map(|member| {
+            let package = read(root.join(member.as_str()?).join("Cargo.toml"))?;
+            Some(package.get("package")?.get("name")?.as_str()?.to_string())
+        })
+        .collect()
 }
 
 /// Which target a test binary was built from.
@@ -388,6 +549,47 @@ pub fn cargo_failure(stderr: &str) -> CargoFailure {
     }
 }
 
+/// A build that built nothing to run: why, and every compiler error.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct BuildFailure {
+    /// Why, in one line.
+    pub failure: CargoFailure,
+    /// Every compiler error, in the order the compiler gave them.
+    pub errors: Vec<CompileError>,
+}
+
+/// One compiler error.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CompileError {
+    /// Its first line: `error[E0308]: mismatched types`.
+    pub message: String,
+    /// Where, as the compiler said it without `src/../`:
+    /// `chapters/ch02-plane-polygon-hits/exercise/ray_plane.rs:3:26`.
+    pub at: Option<String>,
+}
+
+/// Every compiler error in cargo's stderr (not cargo's own `could not
+/// compile` lines), with its location.
+pub fn compile_errors(stderr: &str) -> Vec<CompileError> {
+    let lines: Vec<&str> = stderr.lines().collect();
+    lines
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| {
+            (l.starts_with("error[") || l.starts_with("error: "))
+                && !l.starts_with("error: could not compile")
+                && !l.starts_with("error: aborting")
+        })
+        .map(|(i, l)| CompileError {
+            message: l.to_string(),
+            at: lines
+                .get(i + 1)
+                .and_then(|n| n.trim().strip_prefix("--> "))
+                .map(|at| at.replace("src/../", "")),
+        })
+        .collect()
+}
+
 /// How a process that cargo ran (the compiler) ended, from cargo's "process
 /// didn't exit successfully: `…` (signal: 7, SIGBUS: …)": the text in the
 /// last brackets.
@@ -421,6 +623,7 @@ fn test_command(
     executable: &Executable,
     cargo: &str,
     args: &[&str],
+    context: &Context,
 ) -> Command {
     let mut command = Command::new(&executable.path);
     command
@@ -437,14 +640,25 @@ fn test_command(
         .env_remove("RUST_TEST_THREADS")
         .env_remove("RUST_TEST_SHUFFLE")
         .env_remove("RUST_TEST_SHUFFLE_SEED")
-        // Snapshot diffs in full and uncoloured; no snapshot or reference
-        // image accepted or written while checking.
-        .env("INSTA_OUTPUT", "diff")
-        .env_remove("INSTA_FORCE_PASS")
         .env_remove("CLICOLOR_FORCE")
         .env_remove("RAYSTEP_BLESS");
-    if std::env::var_os("INSTA_UPDATE").is_none() {
-        command.env("INSTA_UPDATE", "no");
+    // No snapshot is ever written or accepted while checking, whatever the
+    // user's environment or an `insta.yaml` says: every `INSTA_*` variable
+    // goes, and the ones that decide are set (they override the file).
+    for (name, _) in std::env::vars_os() {
+        if name.to_string_lossy().starts_with("INSTA_") {
+            command.env_remove(name);
+        }
+    }
+    command
+        .env("INSTA_UPDATE", "no")
+        .env("INSTA_FORCE_PASS", "0")
+        .env("INSTA_REQUIRE_FULL_MATCH", "0")
+        // Snapshot diffs uncoloured, in insta's usual layout (see
+        // `crate::snapshot_diff`).
+        .env("INSTA_OUTPUT", "diff");
+    if let Some(root) = &context.workspace {
+        command.env("INSTA_WORKSPACE_ROOT", root);
     }
     command
 }
@@ -455,6 +669,7 @@ fn run_tests(
     cargo: &str,
     limit: Duration,
     threads: usize,
+    context: &Context,
 ) -> TestBinary {
     let threads_arg = threads.to_string();
     let args = [
@@ -465,8 +680,10 @@ fn run_tests(
         "--format",
         "pretty",
     ];
-    let ran =
-        run_with_limit(&mut test_command(executable, cargo, &args), limit);
+    let ran = run_with_limit(
+        &mut test_command(executable, cargo, &args, context),
+        limit,
+    );
     let (stdout, ended) = match ran {
         Err(error) => (String::new(), Ended::NotStarted(error.to_string())),
         Ok(Ran {
@@ -488,6 +705,7 @@ fn run_tests(
                 executable,
                 cargo,
                 &["--list", "--format", "terse"],
+                context,
             );
             let listed = match run_with_limit(&mut list, LIST_LIMIT.min(limit))
             {
@@ -507,7 +725,7 @@ fn run_tests(
             )
         }
     };
-    test_binary(executable.target.clone(), &stdout, &ended)
+    test_binary_in(executable.target.clone(), &stdout, &ended, context)
 }
 
 /// How a process run by [`run_with_limit`] ended.
@@ -753,8 +971,27 @@ pub enum Outcome {
     Passed,
     /// `ignored`.
     Ignored,
-    /// `FAILED`, with the first line of the panic message if one was printed.
-    Failed(Option<String>),
+    /// `FAILED`, with its panic if one was printed.
+    Failed(Option<Failure>),
+}
+
+/// Why a test failed: the first line of its panic, or for a snapshot the
+/// first row or line that differs; and where.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Failure {
+    /// What went wrong, in one line.
+    pub message: String,
+    /// `file:line` of the panic (of the snapshot assertion for a snapshot),
+    /// relative to the package when it is in it: `tests/recursion.rs:212`.
+    /// `None` when the panic is in a library outside the workspace.
+    pub at: Option<String>,
+}
+
+impl Failure {
+    /// The test stopped at a `todo!()`.
+    pub fn is_todo(&self) -> bool {
+        self.message.contains(TODO)
+    }
 }
 
 /// One test and how it ended.
@@ -777,28 +1014,123 @@ pub struct Output {
     pub slow: Vec<String>,
 }
 
+/// Where a test binary ran: to read the snapshot files its failures name,
+/// and to say panic locations relative to the package.
+#[derive(Debug, Clone, Default)]
+pub struct Context {
+    /// The workspace root (rustc's and insta's paths are relative to it).
+    pub workspace: Option<PathBuf>,
+    /// The package folder.
+    pub package: Option<PathBuf>,
+}
+
+impl Context {
+    /// The text of a snapshot file insta named (relative to the workspace
+    /// root, or to the package).
+    fn snapshot(&self, file: &str) -> Option<String> {
+        [&self.workspace, &self.package]
+            .into_iter()
+            .flatten()
+            .find_map(|dir| std::fs::read_to_string(dir.join(file)).ok())
+    }
+
+    /// `path:line[:column]` as `path:line`, the path relative to the
+    /// package when it is inside it, without `src/../`; `None` for a path
+    /// outside the workspace (a library, the standard library).
+    pub fn location(&self, raw: &str) -> Option<String> {
+        let is_number =
+            |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+        let (rest, last) = raw.trim().rsplit_once(':')?;
+        let (path, line) = match rest.rsplit_once(':') {
+            Some((path, line)) if is_number(line) && is_number(last) => {
+                (path, line)
+            }
+            _ if is_number(last) => (rest, last),
+            _ => return None,
+        };
+        let path = lexically_normal(Path::new(path));
+        let absolute = if path.is_absolute() {
+            path.clone()
+        } else {
+            match &self.workspace {
+                Some(root) => lexically_normal(&root.join(&path)),
+                None => return Some(format!("{}:{line}", slashed(&path))),
+            }
+        };
+        let within = |dir: &Option<PathBuf>| {
+            let dir = lexically_normal(dir.as_ref()?);
+            absolute.strip_prefix(dir).ok().map(Path::to_path_buf)
+        };
+        let shown =
+            within(&self.package).or_else(|| within(&self.workspace))?;
+        Some(format!("{}:{line}", slashed(&shown)))
+    }
+}
+
+/// `a/src/../b` as `a/b`, `./a` as `a` (without touching the file system).
+fn lexically_normal(path: &Path) -> PathBuf {
+    use std::path::Component;
+    let mut normal = PathBuf::new();
+    for part in path.components() {
+        match part {
+            Component::CurDir => {}
+            Component::ParentDir
+                if matches!(
+                    normal.components().next_back(),
+                    Some(Component::Normal(_))
+                ) =>
+            {
+                normal.pop();
+            }
+            other => normal.push(other),
+        }
+    }
+    normal
+}
+
+/// A relative path with `/` between its parts, on every system.
+fn slashed(path: &Path) -> String {
+    path.components()
+        .map(|c| c.as_os_str().to_string_lossy())
+        .collect::<Vec<_>>()
+        .join("/")
+}
+
 /// Reads what one test binary printed on stdout.
+#[cfg(test)]
 pub fn parse_output(stdout: &str) -> Output {
+    parse_output_in(stdout, &Context::default())
+}
+
+/// [`parse_output`], reading the snapshot files failures name and saying
+/// locations as `context` tells.
+pub fn parse_output_in(stdout: &str, context: &Context) -> Output {
     let mut results = Vec::new();
     let mut slow = Vec::new();
-    let mut failures: HashMap<&str, String> = HashMap::new();
+    let mut failures: HashMap<&str, Failure> = HashMap::new();
     let mut finished = false;
     let mut section: Option<(&str, Vec<&str>)> = None;
+    // The failure section of one test ends: read its panic.
+    fn close<'a>(
+        section: &mut Option<(&'a str, Vec<&'a str>)>,
+        failures: &mut HashMap<&'a str, Failure>,
+        context: &Context,
+    ) {
+        if let Some((name, text)) = section.take() {
+            failures.extend(failure(&text, context).map(|m| (name, m)));
+        }
+    }
     for line in stdout.lines() {
         if let Some(name) = line
             .strip_prefix("---- ")
             .and_then(|l| l.strip_suffix(" stdout ----"))
         {
-            if let Some((name, text)) = section.take() {
-                failures.extend(failure_message(&text).map(|m| (name, m)));
-            }
+            close(&mut section, &mut failures, context);
             section = Some((name, Vec::new()));
             continue;
         }
         if line == "failures:" || line.starts_with("test result: ") {
-            if let Some((name, text)) = section.take() {
-                failures.extend(failure_message(&text).map(|m| (name, m)));
-            }
+            close(&mut section, &mut failures, context);
             finished |= line.starts_with("test result: ");
             continue;
         }
@@ -830,12 +1162,10 @@ pub fn parse_output(stdout: &str) -> Output {
             });
         }
     }
-    if let Some((name, text)) = section.take() {
-        failures.extend(failure_message(&text).map(|m| (name, m)));
-    }
+    close(&mut section, &mut failures, context);
     for result in &mut results {
-        if let Outcome::Failed(message) = &mut result.outcome {
-            *message = failures.get(result.name.as_str()).cloned();
+        if let Outcome::Failed(failure) = &mut result.outcome {
+            *failure = failures.get(result.name.as_str()).cloned();
         }
     }
     Output {
@@ -854,17 +1184,35 @@ pub fn parse_list(stdout: &str) -> Vec<String> {
         .collect()
 }
 
-/// The first line of the first panic in a failed test's captured output; for
-/// an insta snapshot, also the first differing lines of its diff, and for
-/// `assert_eq!`, the two values when they are short.
-fn failure_message(text: &[&str]) -> Option<String> {
+/// Why a failed test failed, from its captured output: for an insta
+/// snapshot, the first row or line that differs and where it is asserted;
+/// otherwise the first line of the first panic and where it panicked (for
+/// `assert_eq!`, with the two values when they are short).
+fn failure(text: &[&str], context: &Context) -> Option<Failure> {
     let panic = text.iter().position(|l| {
         l.starts_with("thread '") && l.contains(" panicked at ")
     })?;
+    let panicked_at = text[panic]
+        .split_once(" panicked at ")
+        .map(|(_, at)| at.trim_end().trim_end_matches(':'))
+        .and_then(|at| context.location(at));
+    if let Some(insta) = InstaFailure::parse(&text[..panic]) {
+        let expected = insta
+            .file
+            .as_deref()
+            .and_then(|file| context.snapshot(file))
+            .map(|file| snapshot_contents(&file));
+        return Some(Failure {
+            message: insta.describe(expected.as_deref()),
+            at: insta
+                .source
+                .as_deref()
+                .and_then(|source| context.location(source))
+                .or(panicked_at),
+        });
+    }
     let mut message = text.get(panic + 1)?.trim().to_string();
-    if let Some(diff) = snapshot_difference(&text[..panic]) {
-        message.push_str(&format!(" ({diff})"));
-    } else if message.starts_with("assertion `left") {
+    if message.starts_with("assertion `left") {
         // assert_eq!/assert_ne!: the two values follow on their own lines.
         let value = |i: usize, label: &str| {
             let line = text.get(panic + i)?.trim_start().strip_prefix(label)?;
@@ -876,39 +1224,10 @@ fn failure_message(text: &[&str]) -> Option<String> {
             message.push_str(&format!(" (left: {left}, right: {right})"));
         }
     }
-    Some(message)
-}
-
-/// The first removed and added line of an insta snapshot diff, runs of
-/// spaces squeezed: ``snapshot line 1: expected `3`, got `4` ``.
-fn snapshot_difference(text: &[&str]) -> Option<String> {
-    if !text.iter().any(|l| l.contains("Snapshot Summary")) {
-        return None;
-    }
-    // Diff rows are `  old  new │±text`; the first row with this sign.
-    let changed = |sign: &str| {
-        text.iter().find_map(|l| {
-            let (numbers, rest) = l.split_once(&format!("│{sign}"))?;
-            let number =
-                numbers.split_whitespace().next().unwrap_or("?").to_string();
-            Some((
-                number,
-                rest.split_whitespace().collect::<Vec<_>>().join(" "),
-            ))
-        })
-    };
-    match (changed("-"), changed("+")) {
-        (Some((line, old)), Some((_, new))) => Some(format!(
-            "snapshot line {line}: expected `{old}`, got `{new}`"
-        )),
-        (Some((line, old)), None) => {
-            Some(format!("snapshot line {line}: missing `{old}`"))
-        }
-        (None, Some((line, new))) => {
-            Some(format!("new line {line}: unexpected `{new}`"))
-        }
-        (None, None) => None,
-    }
+    Some(Failure {
+        message,
+        at: panicked_at,
+    })
 }
 
 /// How a test binary's run ended.
@@ -970,8 +1289,20 @@ pub struct TestBinary {
 }
 
 /// One binary's results from what it printed and how it ended.
+#[cfg(test)]
 pub fn test_binary(target: Target, stdout: &str, ended: &Ended) -> TestBinary {
-    let output = parse_output(stdout);
+    test_binary_in(target, stdout, ended, &Context::default())
+}
+
+/// [`test_binary`], reading snapshot files and saying locations as
+/// `context` tells.
+pub fn test_binary_in(
+    target: Target,
+    stdout: &str,
+    ended: &Ended,
+    context: &Context,
+) -> TestBinary {
+    let output = parse_output_in(stdout, context);
     let (crashed, timed_out) = match ended {
         Ended::TimedOut {
             limit,
@@ -1049,12 +1380,43 @@ fn still_running(
 pub enum Verdict {
     /// Every test of the exercise passed.
     Passed,
-    /// A test failed for a reason other than `todo!()`: the first such test and why.
+    /// A test failed for a reason other than `todo!()`: the first such
+    /// test, where, and why (`name (tests/x.rs:12): message`).
     Failed(String),
     /// Every failing test stopped at a `todo!()`.
     NotAttempted,
     /// The exercise's test binary was still running at the time limit.
     TimedOut(TimedOut),
+    /// Nothing was built to run: the chapter does not compile, or cargo
+    /// failed.
+    NotBuilt(CargoFailure),
+}
+
+impl Verdict {
+    /// The verdict in a word or two, for tables: `passed`, `failed`, `not
+    /// attempted`, `timed out`, `does not compile`, `cargo failed`.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Verdict::Passed => "passed",
+            Verdict::Failed(_) => "failed",
+            Verdict::NotAttempted => "not attempted",
+            Verdict::TimedOut(_) => "timed out",
+            Verdict::NotBuilt(CargoFailure::DoesNotCompile(_)) => {
+                "does not compile"
+            }
+            Verdict::NotBuilt(CargoFailure::Cargo(_)) => "cargo failed",
+        }
+    }
+
+    /// What there is to say beyond [`Verdict::kind`].
+    pub fn message(&self) -> Option<String> {
+        match self {
+            Verdict::Passed | Verdict::NotAttempted => None,
+            Verdict::Failed(why) => Some(why.clone()),
+            Verdict::TimedOut(timed_out) => Some(timed_out.to_string()),
+            Verdict::NotBuilt(failure) => Some(failure.to_string()),
+        }
+    }
 }
 
 impl fmt::Display for Verdict {
@@ -1064,52 +1426,103 @@ impl fmt::Display for Verdict {
             Verdict::Failed(why) => write!(f, "failed: {why}"),
             Verdict::NotAttempted => write!(f, "not attempted"),
             Verdict::TimedOut(timed_out) => write!(f, "{timed_out}"),
+            Verdict::NotBuilt(failure) => write!(f, "{failure}"),
         }
     }
 }
 
-/// The verdict on every exercise, and the count of the chapter's other tests.
-#[derive(Debug, Clone, PartialEq, Eq)]
+/// The verdict on every exercise, the count of the chapter's other tests,
+/// and the snapshot files that are not the reference.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct Report {
     /// Each exercise and its verdict, in the order given.
     pub exercises: Vec<(String, Verdict)>,
     /// Other tests (unit tests, tests of no exercise) that passed.
     pub other_passed: usize,
-    /// Other tests that failed, each as `name: why`, and other binaries that
-    /// crashed or timed out.
+    /// Other tests that stopped at a `todo!()`: they wait for the exercises.
+    pub other_waiting: usize,
+    /// Other tests that failed, each as `name (file:line): why`, in source
+    /// order (else by name), and other binaries that crashed or timed out.
     pub other_failed: Vec<String>,
+    /// Set when nothing was built to run.
+    pub build_failure: Option<BuildFailure>,
+    /// Snapshot files that are not the reference.
+    pub changed_snapshots: Vec<ChangedSnapshot>,
+    /// The package folder, as the user would type it (for the advice on
+    /// changed snapshots).
+    pub package_dir: PathBuf,
 }
 
 impl Report {
-    /// Every exercise passed and no other test failed.
+    /// The report when nothing could be built: every exercise says why.
+    pub fn not_built(exercises: &[String], failure: BuildFailure) -> Report {
+        Report {
+            exercises: exercises
+                .iter()
+                .map(|e| {
+                    (e.clone(), Verdict::NotBuilt(failure.failure.clone()))
+                })
+                .collect(),
+            build_failure: Some(failure),
+            ..Report::default()
+        }
+    }
+
+    /// Every exercise passed, no other test failed or waits, and every
+    /// snapshot is the reference.
     pub fn all_passed(&self) -> bool {
-        self.other_failed.is_empty()
+        self.build_failure.is_none()
+            && self.other_failed.is_empty()
+            && self.other_waiting == 0
+            && self.changed_snapshots.is_empty()
             && self.exercises.iter().all(|(_, v)| *v == Verdict::Passed)
+    }
+
+    /// The other tests in one line: `20 passed, 6 wait for your exercises
+    /// (todo!()), 1 failed (first: …)`.
+    pub fn other_tests(&self) -> String {
+        let mut line = format!("{} passed", self.other_passed);
+        if self.other_waiting > 0 {
+            line.push_str(&format!(
+                ", {} wait for your exercises (todo!())",
+                self.other_waiting
+            ));
+        }
+        if let Some(first) = self.other_failed.first() {
+            line.push_str(&format!(
+                ", {} failed (first: {first})",
+                self.other_failed.len()
+            ));
+        }
+        line
     }
 }
 
 impl fmt::Display for Report {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         const OTHER: &str = "other tests";
-        let width = self
-            .exercises
-            .iter()
-            .map(|(e, _)| e.len())
-            .chain([OTHER.len()])
-            .max()
-            .unwrap_or(0);
-        for (exercise, verdict) in &self.exercises {
-            writeln!(f, "  {exercise:width$}  {verdict}")?;
+        if let Some(build) = &self.build_failure {
+            writeln!(f, "  {}", build.failure)?;
+        } else {
+            let width = self
+                .exercises
+                .iter()
+                .map(|(e, _)| e.len())
+                .chain([OTHER.len()])
+                .max()
+                .unwrap_or(0);
+            for (exercise, verdict) in &self.exercises {
+                writeln!(f, "  {exercise:width$}  {verdict}")?;
+            }
+            writeln!(f, "  {OTHER:width$}  {}", self.other_tests())?;
         }
-        write!(
-            f,
-            "  {OTHER:width$}  {} passed, {} failed",
-            self.other_passed,
-            self.other_failed.len()
-        )?;
-        match self.other_failed.first() {
-            Some(first) => writeln!(f, " (first: {first})")?,
-            None => writeln!(f)?,
+        for line in
+            snapshot_changes::advice(&self.changed_snapshots, &self.package_dir)
+        {
+            writeln!(f, "{line}")?;
+        }
+        if self.build_failure.is_some() {
+            return Ok(());
         }
         let passed = self
             .exercises
@@ -1125,8 +1538,8 @@ impl fmt::Display for Report {
 }
 
 /// Judges each exercise by the results of its test binary `tests/<exercise>.rs`.
-/// `sources` holds the text of those files, to name failing tests in source
-/// order (otherwise alphabetically).
+/// `sources` holds the text of the `tests/*.rs` files by stem, to put
+/// failing tests in source order (otherwise, and for unit tests, by name).
 pub fn report(
     exercises: &[String],
     binaries: &[TestBinary],
@@ -1148,30 +1561,50 @@ pub fn report(
             (exercise.clone(), verdict)
         })
         .collect();
-    let mut other_passed = 0;
-    let mut other_failed = Vec::new();
+    let mut report = Report {
+        exercises,
+        ..Report::default()
+    };
     for binary in binaries.iter().filter(|b| !is_exercise(b)) {
-        for result in &binary.results {
+        let source = match &binary.target {
+            Target::Test(stem) => sources.get(stem).map(String::as_str),
+            Target::Unit(_) => None,
+        };
+        let mut results: Vec<&TestResult> = binary.results.iter().collect();
+        results.sort_by_key(|r| (source_position(source, &r.name), &r.name));
+        for result in results {
             match &result.outcome {
-                Outcome::Passed => other_passed += 1,
+                Outcome::Passed => report.other_passed += 1,
                 Outcome::Ignored => {}
-                Outcome::Failed(why) => {
-                    other_failed.push(describe(&result.name, why.as_deref()))
+                Outcome::Failed(Some(why)) if why.is_todo() => {
+                    report.other_waiting += 1;
                 }
+                Outcome::Failed(why) => report
+                    .other_failed
+                    .push(describe(&result.name, why.as_ref())),
             }
         }
         if let Some(crash) = &binary.crashed {
-            other_failed.push(crash.clone());
+            report
+                .other_failed
+                .push(format!("{}: {crash}", binary.target));
         }
         if let Some(timed_out) = &binary.timed_out {
-            other_failed.push(format!("{}: {timed_out}", binary.target));
+            report
+                .other_failed
+                .push(format!("{}: {timed_out}", binary.target));
         }
     }
-    Report {
-        exercises,
-        other_passed,
-        other_failed,
-    }
+    report
+}
+
+/// Where the test `name` (`tests::x` or `x`) is defined in `source`;
+/// `usize::MAX` if unknown, so that those come last, by name.
+fn source_position(source: Option<&str>, name: &str) -> usize {
+    let short = name.rsplit("::").next().unwrap_or(name);
+    source
+        .and_then(|s| s.find(&format!("fn {short}(")))
+        .unwrap_or(usize::MAX)
 }
 
 /// One exercise's verdict from its binaries' results.
@@ -1190,24 +1623,18 @@ fn verdict(
     {
         return Verdict::TimedOut(timed_out.clone());
     }
-    let position = |name: &str| {
-        let short = name.rsplit("::").next().unwrap_or(name);
-        source
-            .and_then(|s| s.find(&format!("fn {short}(")))
-            .unwrap_or(usize::MAX)
-    };
-    let mut failed: Vec<(&str, Option<&str>)> = binaries
+    let mut failed: Vec<(&str, Option<&Failure>)> = binaries
         .iter()
         .flat_map(|b| &b.results)
         .filter_map(|r| match &r.outcome {
-            Outcome::Failed(why) => Some((r.name.as_str(), why.as_deref())),
+            Outcome::Failed(why) => Some((r.name.as_str(), why.as_ref())),
             _ => None,
         })
         .collect();
-    failed.sort_by_key(|(name, _)| (position(name), *name));
+    failed.sort_by_key(|(name, _)| (source_position(source, name), *name));
     let not_todo = failed
         .iter()
-        .find(|(_, why)| !why.is_some_and(|w| w.contains(TODO)));
+        .find(|(_, why)| !why.is_some_and(Failure::is_todo));
     if let Some((name, why)) = not_todo {
         return Verdict::Failed(describe(name, *why));
     }
@@ -1221,9 +1648,16 @@ fn verdict(
     }
 }
 
-/// `name: first line of the panic`.
-fn describe(name: &str, why: Option<&str>) -> String {
-    format!("{name}: {}", why.unwrap_or("failed (no panic message)"))
+/// `name (file:line): what went wrong`.
+fn describe(name: &str, why: Option<&Failure>) -> String {
+    match why {
+        Some(Failure {
+            message,
+            at: Some(at),
+        }) => format!("{name} ({at}): {message}"),
+        Some(Failure { message, at: None }) => format!("{name}: {message}"),
+        None => format!("{name}: failed (no panic message)"),
+    }
 }
 
 #[cfg(test)]
@@ -1381,21 +1815,33 @@ mod tests {
                 .map(|r| r.outcome.clone())
                 .unwrap()
         };
+        let failed = |message: &str, at: &str| {
+            Outcome::Failed(Some(Failure {
+                message: message.into(),
+                at: Some(at.into()),
+            }))
+        };
+        // Where it panicked, without `src/../` and the column.
         assert_eq!(
             outcome(1, "adds_small"),
-            Outcome::Failed(Some("not yet implemented".into()))
+            failed("not yet implemented", "exercise/ex.rs:1")
         );
         assert_eq!(
             outcome(3, "triple_eq"),
-            Outcome::Failed(Some(
-                "assertion `left == right` failed: triple of two (left: 8, right: 6)".into()
-            ))
+            failed(
+                "assertion `left == right` failed: triple of two (left: 8, right: 6)",
+                "tests/triple.rs:4"
+            )
         );
+        // A snapshot: where it is asserted (insta panics in its own
+        // code); the snapshot file is not there, so the diff alone says
+        // which line differs.
         assert_eq!(
             outcome(3, "triple_snapshot"),
-            Outcome::Failed(Some(
-                "snapshot assertion for 'triples' failed in line 2 (snapshot line 1: expected `3`, got `4`)".into()
-            ))
+            failed(
+                "snapshot triples, line 1: expected `3`, got `4`",
+                "tests/triple.rs:2"
+            )
         );
         assert_eq!(outcome(3, "triple_zero"), Outcome::Passed);
     }
@@ -1416,8 +1862,8 @@ mod tests {
                 (
                     "triple".to_string(),
                     Verdict::Failed(
-                        "triple_snapshot: snapshot assertion for 'triples' failed in line 2 \
-                         (snapshot line 1: expected `3`, got `4`)"
+                        "triple_snapshot (tests/triple.rs:2): snapshot triples, \
+                         line 1: expected `3`, got `4`"
                             .into()
                     )
                 ),
@@ -1429,9 +1875,9 @@ mod tests {
         assert_eq!(
             report.to_string(),
             "  add          not attempted\n\
-             \x20 triple       failed: triple_snapshot: snapshot assertion for 'triples' failed \
-             in line 2 (snapshot line 1: expected `3`, got `4`)\n\
-             \x20 other tests  2 passed, 0 failed\n\
+             \x20 triple       failed: triple_snapshot (tests/triple.rs:2): snapshot \
+             triples, line 1: expected `3`, got `4`\n\
+             \x20 other tests  2 passed\n\
              0 of 2 exercises passed\n"
         );
     }
@@ -1443,7 +1889,8 @@ mod tests {
         assert_eq!(
             report.exercises[0].1,
             Verdict::Failed(
-                "triple_eq: assertion `left == right` failed: triple of two (left: 8, right: 6)"
+                "triple_eq (tests/triple.rs:4): assertion `left == right` \
+                 failed: triple of two (left: 8, right: 6)"
                     .into()
             )
         );
@@ -1485,6 +1932,14 @@ mod tests {
         assert_eq!(
             failure.to_string(),
             "the tests do not compile: error[E0308]: mismatched types (at exercise/ex.rs:3:26)"
+        );
+        // Every error, not cargo's own lines.
+        assert_eq!(
+            compile_errors(include_str!("../testdata/compile-error.stderr")),
+            [CompileError {
+                message: "error[E0308]: mismatched types".into(),
+                at: Some("exercise/ex.rs:3:26".into()),
+            }]
         );
     }
 
@@ -1594,13 +2049,98 @@ mod tests {
         ];
         let report = report(&[], &binaries, &HashMap::new());
         assert_eq!(report.other_passed, 2);
-        assert_eq!(report.other_failed, ["tests::draws: not yet implemented"]);
+        // Stopped at a todo!(): waiting for the exercises, not failed.
+        assert_eq!(report.other_waiting, 1);
+        assert!(report.other_failed.is_empty());
         assert!(!report.all_passed());
         assert!(
             report
                 .to_string()
                 .ends_with("this chapter has no exercises\n")
         );
+    }
+
+    /// Other tests that stopped at `todo!()` wait for the exercises; real
+    /// failures are named in source order whatever order the threads
+    /// finished in.
+    #[test]
+    fn other_tests_wait_or_fail_in_source_order() {
+        let panic = |name: &str, at: &str, message: &str| {
+            format!(
+                "---- {name} stdout ----\n\
+                 thread '{name}' (1) panicked at {at}:\n{message}\n\
+                 note: run with `RUST_BACKTRACE=1` environment variable to display a backtrace\n\n"
+            )
+        };
+        let output = |order: [&str; 4]| {
+            let mut text = "\nrunning 4 tests\n".to_string();
+            for name in order {
+                let status = if name == "fits" { "ok" } else { "FAILED" };
+                text.push_str(&format!("test {name} ... {status}\n"));
+            }
+            text.push_str("\nfailures:\n\n");
+            text.push_str(&panic(
+                "waits",
+                "src/../exercise/ex.rs:3:5",
+                "not yet implemented",
+            ));
+            text.push_str(&panic("late", "tests/other.rs:9:5", "late broke"));
+            text.push_str(&panic("early", "tests/other.rs:2:5", "early broke"));
+            text.push_str("failures:\n    early\n    late\n    waits\n\n\
+                test result: FAILED. 1 passed; 3 failed; 0 ignored; 0 measured; 0 filtered out; finished in 0.01s\n");
+            text
+        };
+        let source = "#[test]\nfn late() {}\n#[test]\nfn fits() {}\n\
+                      #[test]\nfn early() {}\n#[test]\nfn waits() {}\n";
+        let sources =
+            HashMap::from([("other".to_string(), source.to_string())]);
+        let ended = Ended::Exited {
+            success: false,
+            how: "exit status: 101".to_string(),
+        };
+        let reports: Vec<Report> = [
+            ["waits", "fits", "early", "late"],
+            ["late", "early", "waits", "fits"],
+        ]
+        .into_iter()
+        .map(|order| {
+            let binary = test_binary(
+                Target::Test("other".into()),
+                &output(order),
+                &ended,
+            );
+            report(&[], &[binary], &sources)
+        })
+        .collect();
+        assert_eq!(
+            reports[0], reports[1],
+            "the order of completion matters not"
+        );
+        let report = &reports[0];
+        assert_eq!(
+            report.other_failed,
+            [
+                "late (tests/other.rs:9): late broke",
+                "early (tests/other.rs:2): early broke"
+            ]
+        );
+        assert_eq!(report.other_waiting, 1);
+        assert_eq!(
+            report.other_tests(),
+            "1 passed, 1 wait for your exercises (todo!()), 2 failed \
+             (first: late (tests/other.rs:9): late broke)"
+        );
+        // Only waiting: no word of failure.
+        let waiting = Report {
+            other_passed: 20,
+            other_waiting: 6,
+            ..Report::default()
+        };
+        assert_eq!(
+            waiting.other_tests(),
+            "20 passed, 6 wait for your exercises (todo!())"
+        );
+        assert!(!waiting.all_passed());
     }
 
     /// `recursion.rs` of a chapter, killed while `facing_mirrors_terminate` loops.
@@ -1655,7 +2195,7 @@ mod tests {
         assert_eq!(
             report.to_string(),
             "  recursion    timed out after 60 s (still running: facing_mirrors_terminate)\n\
-             \x20 other tests  0 passed, 0 failed\n\
+             \x20 other tests  0 passed\n\
              0 of 1 exercises passed\n"
         );
         assert!(!report.all_passed());
@@ -1743,6 +2283,40 @@ mod tests {
             ["a::b", "c"]
         );
         assert!(parse_list("").is_empty());
+    }
+
+    /// A target folder of another workspace: this workspace's crates get
+    /// a setting of their own; in its own `target/`, nothing changes.
+    #[test]
+    fn own_artifacts_apart_in_a_foreign_target_folder() {
+        let dir = tempfile::tempdir().unwrap();
+        let root = dir.path();
+        let write = |path: &str, text: &str| {
+            let path = root.join(path);
+            std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+            std::fs::write(path, text).unwrap();
+        };
+        write(
+            "Cargo.toml",
+            "[workspace]\nmembers = [\"crates/a\", \"chapters/b\"]\n",
+        );
+        write("crates/a/Cargo.toml", "[package]\nname = \"a-core\"\n");
+        write("chapters/b/Cargo.toml", "[package]\nname = \"ch09-b\"\n");
+        assert!(
+            separate_artifacts(root, Some(&root.join("target"))).is_empty()
+        );
+        assert_eq!(
+            separate_artifacts(root, Some(Path::new("/elsewhere/target"))),
+            [
+                "--config",
+                "profile.dev.package.\"a-core\".codegen-units=256",
+                "--config",
+                "profile.dev.package.\"ch09-b\".codegen-units=256",
+            ]
+        );
+        // Unreadable members: nothing to add.
+        write("Cargo.toml", "[workspace\n");
+        assert!(separate_artifacts(root, Some(Path::new("/x"))).is_empty());
     }
 
     #[test]

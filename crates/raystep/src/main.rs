@@ -7,15 +7,27 @@
 //!   writes CSV beside the figures;
 //! * `raystep render SCENE.toml` renders a scene file to a PNG;
 //! * `raystep check ch01` runs a chapter's tests in student mode and says,
-//!   exercise by exercise, what passes.
+//!   exercise by exercise, what passes;
+//! * `raystep grade SUBMISSIONS --chapter ch01` checks every student's
+//!   exercise files in a scratch copy of the workspace, into one table;
+//! * `raystep student-edition OUT` writes the workspace with only the
+//!   exercise stubs, for students.
 
+mod atomic_file;
 mod book;
 mod chapters;
 mod check;
 mod figures;
+mod grade;
 mod measure;
 mod render;
+mod report_formats;
+mod snapshot_changes;
+mod snapshot_diff;
+mod snapshot_table;
+mod student_edition;
 mod workspace;
+mod workspace_copy;
 
 use std::io;
 use std::path::{Path, PathBuf};
@@ -104,10 +116,15 @@ enum Command {
     /// `exercise` feature unless `--reference`); raystep then runs each test
     /// binary itself, one after the other: the unit tests (the library's
     /// first), then `tests/*.rs` by name.
-    /// Each exercise gets one verdict: `passed`, `failed: <test>: <message>`,
-    /// `not attempted` (every failing test stopped at `todo!()`) or `timed out
-    /// after N s`. The verdicts do not depend on cargo's `term` settings.
-    /// Doc tests are not run (the chapters have none).
+    /// Each exercise gets one verdict: `passed`, `failed: <test>
+    /// (<file>:<line>): <message>` (for a snapshot table, the first row whose
+    /// values differ), `not attempted` (every failing test stopped at
+    /// `todo!()`) or `timed out after N s`; the chapter's other tests are
+    /// counted as passed, waiting for the exercises (`todo!()`) or failed.
+    /// No snapshot is ever written or accepted, and snapshot files that
+    /// differ from git's `HEAD` (or insta's `.snap.new` proposals) are named.
+    /// The verdicts do not depend on cargo's `term` settings or insta's
+    /// variables. Doc tests are not run (the chapters have none).
     Check {
         /// The chapter: `ch01`, `01` or `1`.
         chapter: String,
@@ -125,6 +142,63 @@ enum Command {
         /// Do not echo cargo's progress on stderr.
         #[arg(long, short)]
         quiet: bool,
+        /// Also write the report as JSON to this file.
+        #[arg(long, value_name = "FILE")]
+        json: Option<PathBuf>,
+        /// Also write the report as JUnit XML to this file (one test case
+        /// per exercise, one for the other tests).
+        #[arg(long, value_name = "FILE")]
+        junit: Option<PathBuf>,
+    },
+    /// Check every student's exercise files in a scratch copy of the
+    /// workspace, into one table of verdicts.
+    ///
+    /// The students are checked one after the other, by folder name.
+    /// SUBMISSIONS holds one folder per student. A student's files are
+    /// `<student>/exercise/<exercise>.rs` or `<student>/<exercise>.rs`
+    /// (the first if both exist), named after the chapter's exercises;
+    /// every other file is ignored and reported. Before each student the
+    /// chapter's `exercise/` and `tests/snapshots/` are restored from this
+    /// workspace, which is never changed. An exercise without a file is
+    /// `missing file` (its stub is used, so the others are still judged);
+    /// a file that does not compile is `does not compile` (its stub is then
+    /// used for the others).
+    Grade {
+        /// The folder of submissions, one folder per student.
+        submissions: PathBuf,
+        /// The chapter: `ch01`, `01` or `1`.
+        #[arg(long, value_name = "CHAPTER")]
+        chapter: String,
+        /// The CSV table to write (student, exercise, verdict, message).
+        #[arg(long, value_name = "FILE.csv", default_value = "grades.csv")]
+        out: PathBuf,
+        /// Also write the table as JSON to this file.
+        #[arg(long, value_name = "FILE")]
+        json: Option<PathBuf>,
+        /// Kill a test binary still running after this many seconds; its
+        /// exercise is `timed out`.
+        #[arg(long, value_name = "SECS", value_parser = seconds,
+              default_value_t = check::DEFAULT_TIMEOUT_SECS as f64)]
+        timeout: f64,
+        /// Build in this target directory, kept for the next run [env:
+        /// RAYSTEP_CHECK_TARGET_DIR; default: one inside the scratch copy,
+        /// removed at the end].
+        #[arg(long, value_name = "DIR")]
+        target_dir: Option<PathBuf>,
+    },
+    /// Write a copy of the workspace for students, without the solutions.
+    ///
+    /// Every exercise module holds its stub: no reference solution is
+    /// anywhere in the copy.
+    /// For every chapter and exercise `e`, `chapters/<ch>/src/<e>.rs` gets
+    /// the text of `chapters/<ch>/exercise/<e>.rs`, and a chapter's
+    /// `exercise` feature turns on the one of the chapters it builds on
+    /// (so later chapters run on the student's earlier exercises). Build
+    /// output (`target/`, `book/book/`) and `.git` are left out; a new git
+    /// repository with one commit is made if `git` is installed.
+    StudentEdition {
+        /// The folder to create; it must not exist or be empty.
+        out: PathBuf,
     },
 }
 
@@ -152,6 +226,16 @@ fn seconds(arg: &str) -> Result<f64, String> {
         Ok(s) if s > 0.0 && Duration::try_from_secs_f64(s).is_ok() => Ok(s),
         _ => Err("expected a positive number of seconds".to_string()),
     }
+}
+
+/// `--target-dir`, else `RAYSTEP_CHECK_TARGET_DIR`, as an absolute path
+/// (cargo runs in the workspace root: a relative folder means the current
+/// one).
+fn check_target_dir(arg: Option<PathBuf>) -> Option<PathBuf> {
+    arg.or_else(|| {
+        std::env::var_os("RAYSTEP_CHECK_TARGET_DIR").map(PathBuf::from)
+    })
+    .map(|dir| std::path::absolute(&dir).unwrap_or(dir))
 }
 
 /// Everything that stops a command; shown as one line on stderr.
@@ -292,19 +376,33 @@ fn main() -> ExitCode {
             target_dir,
             timeout,
             quiet,
+            json,
+            junit,
         } => check::run(&check::Options {
             chapter,
             reference,
-            target_dir: target_dir
-                .or_else(|| {
-                    std::env::var_os("RAYSTEP_CHECK_TARGET_DIR")
-                        .map(PathBuf::from)
-                })
-                // Cargo runs in the workspace root: a relative folder means the current one.
-                .map(|dir| std::path::absolute(&dir).unwrap_or(dir)),
+            target_dir: check_target_dir(target_dir),
             timeout: Duration::from_secs_f64(timeout),
             quiet,
+            json,
+            junit,
         }),
+        Command::Grade {
+            submissions,
+            chapter,
+            out,
+            json,
+            timeout,
+            target_dir,
+        } => grade::run(&grade::Options {
+            submissions,
+            chapter,
+            out,
+            json,
+            timeout: Duration::from_secs_f64(timeout),
+            target_dir: check_target_dir(target_dir),
+        }),
+        Command::StudentEdition { out } => student_edition::run(&out),
     };
     match result {
         Ok(code) => code,

@@ -123,7 +123,7 @@ fn the_reference_passes_and_the_stubs_do_not() {
             );
         }
         assert!(
-            report.contains("other tests") && report.contains(" 0 failed"),
+            report.contains("other tests") && !report.contains("failed"),
             "{report}"
         );
         assert!(ok, "{chapter} --reference failed:\n{report}{stderr}");
@@ -288,7 +288,7 @@ fn an_endless_loop_times_out() {
         "{report}{stderr}"
     );
     assert!(
-        report.contains("other tests           1 passed, 0 failed"),
+        report.contains("other tests           1 passed\n"),
         "{report}"
     );
     assert!(

@@ -1,0 +1,642 @@
+//! `raystep grade SUBMISSIONS --chapter chNN`: every student's exercise
+//! files checked in turn, as `raystep check` would, into one table.
+//!
+//! The instructor's workspace is never changed: it is copied once into a
+//! scratch folder (sources only), and before each student the chapter's
+//! `exercise/` and `tests/snapshots/` there are restored from the
+//! instructor's copy; then the student's files go in. Every student shares
+//! one target folder, so only the chapter crate is rebuilt. A submission
+//! that is missing a file, does not compile or loops gets its verdict; it
+//! never stops the others.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Duration;
+
+use raystep_figure::Chapter;
+use serde::Serialize;
+
+use crate::check::{self, BuildFailure, CargoFailure, Run};
+use crate::{
+    Error, atomic_file, shown, snapshot_changes, workspace, workspace_copy,
+};
+
+/// What `raystep grade` was asked to do.
+#[derive(Debug)]
+pub struct Options {
+    /// One folder per student.
+    pub submissions: PathBuf,
+    /// `ch01`, `01` or `1`.
+    pub chapter: String,
+    /// The CSV table to write.
+    pub out: PathBuf,
+    /// Also write the table as JSON here.
+    pub json: Option<PathBuf>,
+    /// How long one test binary may run.
+    pub timeout: Duration,
+    /// A target folder to build in (kept); else one in the scratch folder.
+    pub target_dir: Option<PathBuf>,
+}
+
+/// One row of the table: a student's verdict on one exercise.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Row {
+    /// The student's folder name.
+    pub student: String,
+    /// The exercise.
+    pub exercise: String,
+    /// `passed`, `failed`, `not attempted`, `timed out`, `missing file`,
+    /// `does not compile` (or `cargo failed`).
+    pub verdict: String,
+    /// The first failure (which test, where, why), if any.
+    pub message: String,
+}
+
+/// A file of a submission that was not taken.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Ignored {
+    /// The student's folder name (empty for a file beside the folders).
+    pub student: String,
+    /// The file, relative to the student's folder.
+    pub file: String,
+}
+
+/// The JSON document: the table and the files not taken.
+#[derive(Serialize)]
+struct JsonGrades<'a> {
+    chapter: &'a str,
+    package: &'a str,
+    rows: &'a [Row],
+    ignored: &'a [Ignored],
+}
+
+/// Runs `raystep grade`.
+pub fn run(options: &Options) -> Result<ExitCode, Error> {
+    let root = workspace::root();
+    let chapter =
+        crate::chapters::find(&options.chapter, crate::chapters::CHAPTERS)?;
+    let (students, mut ignored) = students(&options.submissions)?;
+    // Refuse a table that could not be written before the long work.
+    atomic_file::can_write(&options.out)?;
+    if let Some(path) = &options.json {
+        atomic_file::can_write(path)?;
+    }
+    let exercises: Vec<String> =
+        chapter.exercises.iter().map(|e| e.to_string()).collect();
+
+    let instructor = root.join("chapters").join(chapter.package);
+    let changed = snapshot_changes::changed_snapshots(&instructor);
+    for line in
+        snapshot_changes::advice(&changed, &crate::relative(&instructor))
+    {
+        eprintln!("{line}");
+    }
+
+    let scratch = tempfile::Builder::new()
+        .prefix("raystep-grade-")
+        .tempdir()
+        .map_err(|e| Error::io(&std::env::temp_dir(), e))?;
+    let copy = scratch.path().join("workspace");
+    eprintln!("copying the workspace to {}…", copy.display());
+    workspace_copy::copy_sources(&root, &copy, &[])?;
+    link_shared(&root, scratch.path());
+    let run = Run {
+        reference: false,
+        target_dir: Some(
+            options
+                .target_dir
+                .clone()
+                .unwrap_or_else(|| scratch.path().join("target")),
+        ),
+        quiet: true,
+        timeout: options.timeout,
+    };
+    eprintln!(
+        "grading {} students on {} (the first build takes a few minutes)",
+        students.len(),
+        chapter.package
+    );
+    let mut rows = Vec::new();
+    for (i, (name, folder)) in students.iter().enumerate() {
+        eprintln!("[{}/{}] {name}", i + 1, students.len());
+        let submission = submission(folder, &exercises);
+        ignored.extend(submission.ignored.iter().map(|file| Ignored {
+            student: name.clone(),
+            file: file.clone(),
+        }));
+        let verdicts =
+            grade_student(&root, &copy, chapter, &submission.files, &run)?;
+        rows.extend(verdicts.into_iter().map(
+            |(exercise, (verdict, message))| Row {
+                student: name.clone(),
+                exercise,
+                verdict,
+                message,
+            },
+        ));
+    }
+
+    atomic_file::write(&options.out, csv_table(&rows)?.as_bytes())?;
+    if let Some(path) = &options.json {
+        let document = JsonGrades {
+            chapter: chapter.id,
+            package: chapter.package,
+            rows: &rows,
+            ignored: &ignored,
+        };
+        let mut text = serde_json::to_string_pretty(&document)
+            .expect("the table serialises");
+        text.push('\n');
+        atomic_file::write(path, text.as_bytes())?;
+    }
+    print!("{}", summary(chapter, &exercises, &rows));
+    for file in &ignored {
+        let path = Path::new(&file.student).join(&file.file);
+        println!("ignored: {}", path.display());
+    }
+    let mut written = vec![shown(&options.out)];
+    written.extend(options.json.as_deref().map(shown));
+    println!("wrote {}", written.join(" and "));
+    Ok(ExitCode::SUCCESS)
+}
+
+/// A student's name (the folder's) and folder.
+type Student = (String, PathBuf);
+
+/// The student folders in `submissions`, sorted by name, and the entries
+/// that are not student folders (files, hidden folders).
+fn students(submissions: &Path) -> Result<(Vec<Student>, Vec<Ignored>), Error> {
+    let error = |e| Error::io(submissions, e);
+    if !submissions.is_dir() {
+        return Err(Error::Usage(format!(
+            "{}: not a folder of submissions (one folder per student)",
+            shown(submissions)
+        )));
+    }
+    let mut students = Vec::new();
+    let mut ignored = Vec::new();
+    for entry in fs::read_dir(submissions).map_err(error)? {
+        let entry = entry.map_err(error)?;
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if entry.path().is_dir() && !name.starts_with('.') {
+            students.push((name, entry.path()));
+        } else {
+            ignored.push(Ignored {
+                student: String::new(),
+                file: name,
+            });
+        }
+    }
+    if students.is_empty() {
+        return Err(Error::Usage(format!(
+            "{}: no student folders in it (one folder per student, each \
+             holding exercise/*.rs)",
+            shown(submissions)
+        )));
+    }
+    students.sort();
+    ignored.sort_by(|a, b| a.file.cmp(&b.file));
+    Ok((students, ignored))
+}
+
+/// The files a student handed in.
+#[derive(Debug, Default, PartialEq, Eq)]
+pub struct Submission {
+    /// Exercise name → its file.
+    pub files: BTreeMap<String, PathBuf>,
+    /// Every other file, relative to the student's folder, sorted.
+    pub ignored: Vec<String>,
+}
+
+/// The exercise files in a student's folder: `exercise/<e>.rs`, else
+/// `<e>.rs`, for each exercise `e` of the chapter. Every other file is
+/// ignored (and listed).
+pub fn submission(folder: &Path, exercises: &[String]) -> Submission {
+    let mut found = Submission::default();
+    let mut all: Vec<String> = walkdir::WalkDir::new(folder)
+        .sort_by_file_name()
+        .into_iter()
+        .flatten()
+        .filter(|e| !e.file_type().is_dir())
+        .filter_map(|e| {
+            let relative = e.path().strip_prefix(folder).ok()?;
+            Some(
+                relative
+                    .components()
+                    .map(|c| c.as_os_str().to_string_lossy())
+                    .collect::<Vec<_>>()
+                    .join("/"),
+            )
+        })
+        .collect();
+    all.sort();
+    for exercise in exercises {
+        let choices =
+            [format!("exercise/{exercise}.rs"), format!("{exercise}.rs")];
+        if let Some(file) = choices.iter().find(|c| all.contains(c)) {
+            found.files.insert(exercise.clone(), folder.join(file));
+            all.retain(|f| f != file);
+        }
+    }
+    found.ignored = all;
+    found
+}
+
+/// A verdict and its message.
+type Verdict = (String, String);
+
+/// Checks one student's files in the scratch workspace `copy`; the
+/// chapter's `exercise/` and `tests/snapshots/` come from `root` first.
+fn grade_student(
+    root: &Path,
+    copy: &Path,
+    chapter: &Chapter,
+    files: &BTreeMap<String, PathBuf>,
+    run: &Run,
+) -> Result<Vec<(String, Verdict)>, Error> {
+    let instructor = root.join("chapters").join(chapter.package);
+    let scratch = copy.join("chapters").join(chapter.package);
+    for folder in ["exercise", "tests/snapshots"] {
+        workspace_copy::replace_folder(
+            &instructor.join(folder),
+            &scratch.join(folder),
+        )?;
+    }
+    let stub = |exercise: &str| -> Result<(), Error> {
+        let from = instructor.join("exercise").join(format!("{exercise}.rs"));
+        let to = scratch.join("exercise").join(format!("{exercise}.rs"));
+        fs::copy(&from, &to).map_err(|e| Error::io(&from, e))?;
+        Ok(())
+    };
+
+    // Verdicts settled before the tests run.
+    let mut settled: BTreeMap<String, Verdict> = BTreeMap::new();
+    let mut submitted: Vec<String> = Vec::new();
+    for exercise in chapter.exercises {
+        let Some(file) = files.get(*exercise) else {
+            settled.insert(
+                exercise.to_string(),
+                (
+                    "missing file".into(),
+                    format!("no exercise/{exercise}.rs (the stub was used)"),
+                ),
+            );
+            continue;
+        };
+        let to = scratch.join("exercise").join(format!("{exercise}.rs"));
+        match fs::copy(file, &to) {
+            Ok(_) => submitted.push(exercise.to_string()),
+            Err(error) => {
+                settled.insert(
+                    exercise.to_string(),
+                    (
+                        "missing file".into(),
+                        format!(
+                            "{}: {error} (the stub was used)",
+                            file.display()
+                        ),
+                    ),
+                );
+            }
+        }
+    }
+
+    // Files that do not compile are put back to their stubs, one build at a
+    // time, so that the other exercises can still be judged.
+    while let Some(failure) = check::build_failure(copy, chapter, run)? {
+        if !matches!(failure.failure, CargoFailure::DoesNotCompile(_)) {
+            break; // cargo itself failed: every verdict says so below
+        }
+        let mut blamed = blamed_files(&failure, chapter.package, &submitted);
+        if blamed.is_empty() {
+            blamed = alone_failing(copy, chapter, run, &submitted, &stub)?;
+        }
+        if blamed.is_empty() {
+            // Not one file alone: together, or the stubs, do not compile.
+            blamed = submitted.clone();
+        }
+        if blamed.is_empty() {
+            break;
+        }
+        for exercise in &blamed {
+            settled.insert(
+                exercise.clone(),
+                (
+                    "does not compile".into(),
+                    compile_message(&failure, chapter.package, exercise),
+                ),
+            );
+            stub(exercise)?;
+        }
+        submitted.retain(|e| !blamed.contains(e));
+    }
+
+    let report = check::check_chapter(copy, chapter, run)?;
+    Ok(report
+        .exercises
+        .into_iter()
+        .map(|(exercise, verdict)| {
+            let row = settled.remove(&exercise).unwrap_or_else(|| {
+                (
+                    verdict.kind().to_string(),
+                    verdict.message().unwrap_or_default(),
+                )
+            });
+            (exercise, row)
+        })
+        .collect())
+}
+
+/// `chapters/<package>/exercise/x.rs:3:9` → `exercise/x.rs:3:9`.
+fn in_package<'a>(at: &'a str, package: &str) -> &'a str {
+    at.strip_prefix(&format!("chapters/{package}/"))
+        .unwrap_or(at)
+}
+
+/// The submitted exercises whose own file or test file holds a compiler
+/// error.
+fn blamed_files(
+    failure: &BuildFailure,
+    package: &str,
+    submitted: &[String],
+) -> Vec<String> {
+    submitted
+        .iter()
+        .filter(|exercise| {
+            failure.errors.iter().any(|error| {
+                error.at.as_deref().is_some_and(|at| {
+                    let at = in_package(at, package);
+                    at.starts_with(&format!("exercise/{exercise}.rs:"))
+                        || at.starts_with(&format!("tests/{exercise}.rs:"))
+                })
+            })
+        })
+        .cloned()
+        .collect()
+}
+
+/// When no error names a file: the submitted exercises that do not compile
+/// on their own, every other submitted file a stub.
+fn alone_failing(
+    copy: &Path,
+    chapter: &Chapter,
+    run: &Run,
+    submitted: &[String],
+    stub: &dyn Fn(&str) -> Result<(), Error>,
+) -> Result<Vec<String>, Error> {
+    if submitted.len() < 2 {
+        return Ok(submitted.to_vec());
+    }
+    let scratch = copy.join("chapters").join(chapter.package);
+    // Keep the student's files aside, then try each alone.
+    let mut kept = BTreeMap::new();
+    for exercise in submitted {
+        let path = scratch.join("exercise").join(format!("{exercise}.rs"));
+        kept.insert(
+            exercise.clone(),
+            fs::read(&path).map_err(|e| Error::io(&path, e))?,
+        );
+        stub(exercise)?;
+    }
+    let mut failing = Vec::new();
+    for (exercise, text) in &kept {
+        let path = scratch.join("exercise").join(format!("{exercise}.rs"));
+        fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
+        if check::build_failure(copy, chapter, run)?.is_some() {
+            failing.push(exercise.clone());
+        }
+        stub(exercise)?;
+    }
+    for (exercise, text) in &kept {
+        let path = scratch.join("exercise").join(format!("{exercise}.rs"));
+        fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
+    }
+    Ok(failing)
+}
+
+/// The first compiler error in the exercise's own files, else the build's
+/// first error.
+fn compile_message(
+    failure: &BuildFailure,
+    package: &str,
+    exercise: &str,
+) -> String {
+    let own = failure.errors.iter().find_map(|error| {
+        let at = in_package(error.at.as_deref()?, package);
+        (at.starts_with(&format!("exercise/{exercise}.rs:"))
+            || at.starts_with(&format!("tests/{exercise}.rs:")))
+        .then(|| format!("{} (at {at})", error.message))
+    });
+    own.unwrap_or_else(|| failure.failure.to_string())
+}
+
+/// The table as CSV: a header, then one row per student and exercise.
+fn csv_table(rows: &[Row]) -> Result<String, Error> {
+    let mut writer = csv::Writer::from_writer(Vec::new());
+    for row in rows {
+        writer.serialize(row).map_err(|e| {
+            Error::Usage(format!("cannot write the CSV table: {e}"))
+        })?;
+    }
+    if rows.is_empty() {
+        writer
+            .write_record(["student", "exercise", "verdict", "message"])
+            .map_err(|e| {
+                Error::Usage(format!("cannot write the CSV table: {e}"))
+            })?;
+    }
+    let bytes = writer.into_inner().map_err(|e| {
+        Error::Usage(format!("cannot write the CSV table: {e}"))
+    })?;
+    Ok(String::from_utf8(bytes).expect("the table is UTF-8"))
+}
+
+/// The summary on stdout: one line per student, one column per exercise,
+/// and how many exercises passed.
+fn summary(chapter: &Chapter, exercises: &[String], rows: &[Row]) -> String {
+    let mut students: Vec<&str> =
+        rows.iter().map(|r| r.student.as_str()).collect();
+    students.dedup();
+    let verdict = |student: &str, exercise: &str| {
+        rows.iter()
+            .find(|r| r.student == student && r.exercise == exercise)
+            .map_or("", |r| r.verdict.as_str())
+    };
+    let mut table: Vec<Vec<String>> = vec![
+        std::iter::once("student".to_string())
+            .chain(exercises.iter().cloned())
+            .chain(["passed".to_string()])
+            .collect(),
+    ];
+    for student in &students {
+        let verdicts: Vec<&str> =
+            exercises.iter().map(|e| verdict(student, e)).collect();
+        let passed = verdicts.iter().filter(|v| **v == "passed").count();
+        table.push(
+            std::iter::once(student.to_string())
+                .chain(verdicts.iter().map(|v| v.to_string()))
+                .chain([format!("{passed} of {}", exercises.len())])
+                .collect(),
+        );
+    }
+    let widths: Vec<usize> = (0..table[0].len())
+        .map(|c| {
+            table
+                .iter()
+                .map(|r| r[c].chars().count())
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let mut text =
+        format!("{} ({} students)\n", chapter.package, students.len());
+    for row in &table {
+        let cells: Vec<String> = row
+            .iter()
+            .zip(&widths)
+            .map(|(cell, w)| format!("{cell:w$}"))
+            .collect();
+        let _ = writeln!(text, "  {}", cells.join("  ").trim_end());
+    }
+    text
+}
+
+/// Chapter 07's tests read `../shared/meshes` beside the workspace: the
+/// scratch workspace gets a link to the instructor's, if there is one.
+fn link_shared(root: &Path, scratch: &Path) {
+    let shared = root.join("..").join("shared");
+    if let Ok(shared) = shared.canonicalize() {
+        #[cfg(unix)]
+        let _ = std::os::unix::fs::symlink(shared, scratch.join("shared"));
+        #[cfg(not(unix))]
+        let _ = shared;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::check::CompileError;
+
+    fn names(list: &[&str]) -> Vec<String> {
+        list.iter().map(|s| s.to_string()).collect()
+    }
+
+    #[test]
+    fn exercise_files_are_taken_from_either_place() {
+        let dir = tempfile::tempdir().unwrap();
+        let student = dir.path();
+        for file in [
+            "exercise/ray_plane.rs",
+            "ray_plane.rs",
+            "inside_polygon.rs",
+            "notes.txt",
+            "exercise/other.rs",
+        ] {
+            let path = student.join(file);
+            fs::create_dir_all(path.parent().unwrap()).unwrap();
+            fs::write(path, "").unwrap();
+        }
+        let found = submission(
+            student,
+            &names(&["ray_plane", "inside_polygon", "missing"]),
+        );
+        assert_eq!(
+            found.files,
+            BTreeMap::from([
+                (
+                    "inside_polygon".to_string(),
+                    student.join("inside_polygon.rs")
+                ),
+                (
+                    "ray_plane".to_string(),
+                    student.join("exercise/ray_plane.rs")
+                ),
+            ])
+        );
+        assert_eq!(
+            found.ignored,
+            ["exercise/other.rs", "notes.txt", "ray_plane.rs"]
+        );
+    }
+
+    #[test]
+    fn submissions_must_be_a_folder_of_folders() {
+        let dir = tempfile::tempdir().unwrap();
+        let error = students(&dir.path().join("nope")).unwrap_err().to_string();
+        assert!(
+            error.ends_with(
+                "nope: not a folder of submissions (one folder per student)"
+            ),
+            "{error}"
+        );
+        fs::write(dir.path().join("readme.txt"), "").unwrap();
+        let error = students(dir.path()).unwrap_err().to_string();
+        assert!(error.contains("no student folders"), "{error}");
+        for name in ["zoe", "adam", ".hidden"] {
+            fs::create_dir(dir.path().join(name)).unwrap();
+        }
+        let (found, ignored) = students(dir.path()).unwrap();
+        let found: Vec<&str> = found.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(found, ["adam", "zoe"]);
+        let ignored: Vec<&str> =
+            ignored.iter().map(|i| i.file.as_str()).collect();
+        assert_eq!(ignored, [".hidden", "readme.txt"]);
+    }
+
+    #[test]
+    fn compiler_errors_blame_the_file_they_are_in() {
+        let failure = BuildFailure {
+            failure: CargoFailure::DoesNotCompile("error[E0308]".into()),
+            errors: vec![
+                CompileError {
+                    message: "error[E0425]: cannot find value `x`".into(),
+                    at: Some(
+                        "chapters/ch02-x/exercise/ray_plane.rs:9:5".into(),
+                    ),
+                },
+                CompileError {
+                    message: "error[E0061]: wrong arguments".into(),
+                    at: Some(
+                        "chapters/ch02-x/tests/inside_polygon.rs:3:1".into(),
+                    ),
+                },
+            ],
+        };
+        let submitted = names(&["ray_plane", "inside_polygon", "third"]);
+        assert_eq!(
+            blamed_files(&failure, "ch02-x", &submitted),
+            ["ray_plane", "inside_polygon"]
+        );
+        assert_eq!(
+            compile_message(&failure, "ch02-x", "ray_plane"),
+            "error[E0425]: cannot find value `x` (at exercise/ray_plane.rs:9:5)"
+        );
+        assert_eq!(
+            compile_message(&failure, "ch02-x", "third"),
+            "the tests do not compile: error[E0308]"
+        );
+    }
+
+    #[test]
+    fn the_table_is_csv_with_a_header() {
+        let rows = [Row {
+            student: "ann".into(),
+            exercise: "ray_plane".into(),
+            verdict: "failed".into(),
+            message: "t (tests/x.rs:3): expected `a, b`, got \"c\"".into(),
+        }];
+        assert_eq!(
+            csv_table(&rows).unwrap(),
+            "student,exercise,verdict,message\n\
+             ann,ray_plane,failed,\"t (tests/x.rs:3): expected `a, b`, got \"\"c\"\"\"\n"
+        );
+        assert_eq!(
+            csv_table(&[]).unwrap(),
+            "student,exercise,verdict,message\n"
+        );
+    }
+}

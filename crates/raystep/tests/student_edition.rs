@@ -1,0 +1,413 @@
+//! `raystep student-edition` end to end: one export of this workspace,
+//! shared by the tests of this file, holds no reference solution, and
+//! `raystep check ch01` in it says every exercise is not attempted.
+//!
+//! The nested cargo of `check` builds in the outer target folder (as
+//! `tests/check.rs` does), so only the export's own crates are compiled.
+
+use std::collections::BTreeSet;
+use std::fs;
+use std::hash::{DefaultHasher, Hash, Hasher};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::{Mutex, MutexGuard, OnceLock};
+
+fn workspace() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .canonicalize()
+        .unwrap()
+}
+
+/// The outer build's target folder: `CARGO_TARGET_TMPDIR` is `<target>/tmp`.
+fn outer_target() -> PathBuf {
+    Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .parent()
+        .expect("CARGO_TARGET_TMPDIR is <target>/tmp")
+        .to_path_buf()
+}
+
+/// Runs `raystep <args>` in `dir`: (success, stdout, stderr).
+fn raystep(args: &[&str], dir: &Path) -> (bool, String, String) {
+    raystep_with(args, dir, &[])
+}
+
+/// [`raystep`] with these environment variables set.
+fn raystep_with(
+    args: &[&str],
+    dir: &Path,
+    env: &[(&str, &str)],
+) -> (bool, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_raystep"))
+        .args(args)
+        .current_dir(dir)
+        .env("RAYSTEP_CHECK_TARGET_DIR", outer_target())
+        .envs(env.iter().copied())
+        .output()
+        .expect("raystep runs");
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// Held by the tests that read the export whole or change files in it.
+fn exclusive() -> MutexGuard<'static, ()> {
+    static LOCK: Mutex<()> = Mutex::new(());
+    LOCK.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+/// The student edition of this workspace, written once per run into the
+/// system's temporary folder (a name of its own for each workspace).
+///
+/// Not below the target folder: cargo names the artifacts of a path
+/// package by its path inside its workspace, so the export's crates and
+/// this workspace's share artifacts; cargo would remember an export inside
+/// the target folder by a path relative to it, and later builds of this
+/// workspace would judge freshness by the export's files.
+fn export() -> &'static Path {
+    static EXPORT: OnceLock<PathBuf> = OnceLock::new();
+    EXPORT.get_or_init(|| {
+        let mut hasher = DefaultHasher::new();
+        workspace().hash(&mut hasher);
+        let out = std::env::temp_dir()
+            .join(format!("raystep-student-edition-{:016x}", hasher.finish()));
+        if out.exists() {
+            fs::remove_dir_all(&out).unwrap();
+        }
+        let (ok, stdout, stderr) =
+            raystep(&["student-edition", out.to_str().unwrap()], &workspace());
+        assert!(ok, "student-edition failed:\n{stdout}{stderr}");
+        assert!(stdout.contains("one git commit"), "{stdout}");
+        // One commit, everything in it (checked before any test here
+        // changes a file).
+        let git = |args: &[&str]| {
+            let out = Command::new("git")
+                .args(args)
+                .current_dir(&out)
+                .output()
+                .expect("git runs");
+            assert!(out.status.success(), "git {args:?}");
+            String::from_utf8_lossy(&out.stdout).trim().to_string()
+        };
+        assert_eq!(git(&["rev-list", "--count", "--all"]), "1");
+        assert_eq!(git(&["status", "--porcelain"]), "");
+        out
+    })
+}
+
+/// Is the entry at `relative` left out of the reference workspace's files:
+/// build output, git, the book's HTML, scratch output, insta's proposals.
+fn skipped(relative: &Path) -> bool {
+    let name = relative.file_name().unwrap().to_string_lossy();
+    let path = relative.to_string_lossy().replace('\\', "/");
+    ["target", ".git", "test-output"].contains(&name.as_ref())
+        || ["book/book", "out"].contains(&path.as_str())
+        || name.ends_with(".snap.new")
+        || name.ends_with(".pending-snap")
+}
+
+/// Every text file below `root` (relative path → text), [`skipped`]
+/// entries left out.
+fn text_files(root: &Path) -> Vec<(PathBuf, String)> {
+    let mut files = Vec::new();
+    let mut folders = vec![PathBuf::new()];
+    while let Some(folder) = folders.pop() {
+        for entry in fs::read_dir(root.join(&folder)).unwrap() {
+            let entry = entry.unwrap();
+            let relative = folder.join(entry.file_name());
+            if skipped(&relative) {
+                continue;
+            }
+            if entry.file_type().unwrap().is_dir() {
+                folders.push(relative);
+            } else if let Ok(text) = fs::read_to_string(entry.path()) {
+                files.push((relative, text));
+            }
+        }
+    }
+    files.sort();
+    files
+}
+
+/// Runs of whitespace as one space.
+fn squeezed(text: &str) -> String {
+    text.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// (chapter folder, exercise) for every exercise of every chapter.
+fn exercises() -> Vec<(String, String)> {
+    let mut all = Vec::new();
+    for chapter in fs::read_dir(workspace().join("chapters")).unwrap() {
+        let chapter = chapter.unwrap().path();
+        let Ok(stubs) = fs::read_dir(chapter.join("exercise")) else {
+            continue;
+        };
+        for stub in stubs {
+            let stub = stub.unwrap().path();
+            if stub.extension().is_some_and(|x| x == "rs") {
+                all.push((
+                    chapter.file_name().unwrap().to_string_lossy().into_owned(),
+                    stub.file_stem().unwrap().to_string_lossy().into_owned(),
+                ));
+            }
+        }
+    }
+    all.sort();
+    all
+}
+
+/// Exercise modules whose every reference line is also in another file of
+/// the workspace, so that no line of theirs is distinctive: chapter 05's
+/// `reflect_ray` is one line, `d - 2.0 * d.dot(n) * n`, which
+/// `tests/recursion.rs` also computes (and which the student edition holds
+/// there, as it holds every test).
+const ANSWERED_ELSEWHERE: &[&str] =
+    &["chapters/ch05-reflection/src/reflection.rs"];
+
+/// No reference solution is anywhere in the export. For every exercise
+/// module `chapters/<ch>/src/<e>.rs` of this workspace:
+///
+/// * its *reference lines* are its lines that are not (trimmed) a line of
+///   the stub `chapters/<ch>/exercise/<e>.rs`: the bodies the student
+///   writes;
+/// * each run of consecutive reference lines, whitespace squeezed, of at
+///   least 20 characters, that is not in the (squeezed) text of the stub
+///   or of any other file of this workspace (sources and book, no build
+///   output), is in no file of the export (squeezed too);
+/// * each *distinctive line*, a trimmed reference line of at least 20
+///   characters that is not in the stub or any other file of this
+///   workspace, is in no file of the export; every module has at least
+///   one but those in [`ANSWERED_ELSEWHERE`], which have none.
+///
+/// Files of the export are every text file but its `.git`; its git history
+/// is one commit ([`export`] checks), so no earlier version of a file is in
+/// it.
+#[test]
+fn no_reference_body_is_in_the_export() {
+    let export = export();
+    let _only_me = exclusive();
+    let reference = text_files(&workspace());
+    let exported = text_files(export);
+    let exported_squeezed: Vec<String> =
+        exported.iter().map(|(_, text)| squeezed(text)).collect();
+    for (chapter, exercise) in exercises() {
+        let module =
+            PathBuf::from(format!("chapters/{chapter}/src/{exercise}.rs"));
+        let stub_path =
+            PathBuf::from(format!("chapters/{chapter}/exercise/{exercise}.rs"));
+        let text = |path: &Path| {
+            reference
+                .iter()
+                .find(|(p, _)| p == path)
+                .map(|(_, t)| t.clone())
+                .unwrap_or_else(|| {
+                    panic!("{} is not in the workspace", path.display())
+                })
+        };
+        let (solution, stub) = (text(&module), text(&stub_path));
+        // The export's module is the stub, byte for byte.
+        assert_eq!(
+            fs::read_to_string(export.join(&module)).unwrap(),
+            stub,
+            "{}",
+            module.display()
+        );
+        let stub_lines: BTreeSet<&str> = stub.lines().map(str::trim).collect();
+        let elsewhere: Vec<&str> = reference
+            .iter()
+            .filter(|(p, _)| *p != module)
+            .map(|(_, t)| t.as_str())
+            .collect();
+        let elsewhere_squeezed: Vec<String> =
+            elsewhere.iter().map(|t| squeezed(t)).collect();
+
+        // Runs of consecutive reference lines.
+        let mut runs: Vec<Vec<&str>> = vec![Vec::new()];
+        for line in solution.lines().map(str::trim) {
+            if stub_lines.contains(line) {
+                runs.push(Vec::new());
+            } else {
+                runs.last_mut().unwrap().push(line);
+            }
+        }
+        for run in runs {
+            let run = squeezed(&run.join("\n"));
+            if run.len() < 20
+                || elsewhere_squeezed.iter().any(|t| t.contains(&run))
+            {
+                continue;
+            }
+            for ((path, _), text) in exported.iter().zip(&exported_squeezed) {
+                assert!(
+                    !text.contains(&run),
+                    "{} holds reference code of {}: {run}",
+                    path.display(),
+                    module.display()
+                );
+            }
+        }
+
+        let distinctive: Vec<&str> = solution
+            .lines()
+            .map(str::trim)
+            .filter(|line| {
+                line.chars().count() >= 20 && !stub_lines.contains(line)
+            })
+            .filter(|line| !elsewhere.iter().any(|t| t.contains(line)))
+            .collect();
+        let slashed = module.to_string_lossy().replace('\\', "/");
+        assert_eq!(
+            distinctive.is_empty(),
+            ANSWERED_ELSEWHERE.contains(&slashed.as_str()),
+            "{slashed}: a distinctive line to look for, unless the module is \
+             in ANSWERED_ELSEWHERE"
+        );
+        for line in distinctive {
+            for (path, text) in &exported {
+                assert!(
+                    !text.contains(line),
+                    "{} holds a line of the reference {}: {line}",
+                    path.display(),
+                    module.display()
+                );
+            }
+        }
+    }
+}
+
+/// A later chapter's `exercise` feature turns on the earlier chapter's, so
+/// chapter 02's tests run on the student's chapter 01.
+#[test]
+fn exercise_features_chain_through_the_chapters() {
+    let manifest = fs::read_to_string(
+        export().join("chapters/ch02-plane-polygon-hits/Cargo.toml"),
+    )
+    .unwrap();
+    assert!(
+        manifest.contains("exercise = [\"ch01/exercise\"]"),
+        "{manifest}"
+    );
+    let manifest = fs::read_to_string(
+        export().join("chapters/ch01-implicit-lines-planes/Cargo.toml"),
+    )
+    .unwrap();
+    assert!(manifest.contains("exercise = []"), "{manifest}");
+}
+
+/// The verdict line of `exercise` in a report.
+fn verdict<'a>(report: &'a str, exercise: &str) -> &'a str {
+    report
+        .lines()
+        .find_map(|l| l.trim_start().strip_prefix(&format!("{exercise} ")))
+        .unwrap_or_else(|| panic!("no {exercise} in:\n{report}"))
+        .trim()
+}
+
+/// `raystep check ch01` in the export: every exercise is the untouched
+/// stub. A wrong answer fails with the first wrong row even when the
+/// user's environment asks insta to accept or pass it, and no snapshot is
+/// written; a snapshot changed by hand is noticed (the export is a git
+/// repository).
+#[test]
+fn check_in_the_export() {
+    let export = export();
+    let _only_me = exclusive();
+    let (ok, report, stderr) = raystep(&["check", "ch01", "--quiet"], export);
+    let all = format!("{report}{stderr}");
+    assert!(!ok, "{all}");
+    for exercise in ["line_through_points", "plane_through_points"] {
+        assert_eq!(verdict(&report, exercise), "not attempted", "{all}");
+    }
+    assert!(!report.contains("failed"), "{all}");
+    assert!(!report.contains("warning"), "{all}");
+
+    // The reference with its constant's minus sign dropped, in the
+    // student's file; insta told to accept and to pass everything.
+    let chapter = "chapters/ch01-implicit-lines-planes";
+    let file = export.join(chapter).join("exercise/line_through_points.rs");
+    let stub = fs::read_to_string(&file).unwrap();
+    let reference = fs::read_to_string(
+        workspace().join(chapter).join("src/line_through_points.rs"),
+    )
+    .unwrap();
+    assert!(reference.contains("c = -normal"));
+    fs::write(&file, reference.replacen("c = -normal", "c = normal", 1))
+        .unwrap();
+    let hostile = [
+        ("INSTA_UPDATE", "always"),
+        ("INSTA_FORCE_PASS", "1"),
+        ("INSTA_OUTPUT", "none"),
+    ];
+    let (ok, report, stderr) =
+        raystep_with(&["check", "ch01", "--quiet"], export, &hostile);
+    let changed = Command::new("git")
+        .args(["status", "--porcelain", "--untracked-files=all"])
+        .current_dir(export)
+        .output()
+        .unwrap();
+    fs::write(&file, stub).unwrap();
+    let all = format!("{report}{stderr}");
+    assert!(!ok, "{all}");
+    let line = verdict(&report, "line_through_points");
+    assert!(
+        line.starts_with("failed: line_table (tests/line_through_points.rs:")
+            && line.contains(
+                "): snapshot line_table, row 3 (P1 \"(4.0, 5.0)\"): c expected \
+                 `0.2000`, got `-0.2000`"
+            ),
+        "{all}"
+    );
+    assert!(!report.contains("warning"), "{all}");
+    assert_eq!(
+        String::from_utf8_lossy(&changed.stdout).trim(),
+        format!("M {chapter}/exercise/line_through_points.rs"),
+        "only the student's file changed, no snapshot was written"
+    );
+
+    // A snapshot accepted by hand is not the reference: check says so.
+    let snapshot = export
+        .join(chapter)
+        .join("tests/snapshots/line_through_points__line_table.snap");
+    let original = fs::read_to_string(&snapshot).unwrap();
+    fs::write(&snapshot, format!("{original}extra\n")).unwrap();
+    let (ok, report, stderr) = raystep(&["check", "ch01", "--quiet"], export);
+    fs::write(&snapshot, original).unwrap();
+    assert!(!ok, "{report}{stderr}");
+    assert!(
+        report.contains(
+            "  tests/snapshots/line_through_points__line_table.snap (changed)"
+        ) && report.contains("restore them: git checkout -- "),
+        "{report}{stderr}"
+    );
+}
+
+/// A folder that is not empty is refused, named, and left as it was; no
+/// partial export is left beside it.
+#[test]
+fn a_non_empty_folder_is_refused() {
+    let parent = Path::new(env!("CARGO_TARGET_TMPDIR")).join("edition-refused");
+    let out = parent.join("out");
+    fs::create_dir_all(&out).unwrap();
+    fs::write(out.join("notes.txt"), "mine").unwrap();
+    let (ok, stdout, stderr) =
+        raystep(&["student-edition", out.to_str().unwrap()], &workspace());
+    assert!(!ok, "{stdout}{stderr}");
+    // The path as the user would type it: relative to the current folder.
+    let stderr = stderr.trim();
+    assert!(
+        stderr.starts_with("error: ")
+            && stderr.ends_with(
+                "edition-refused/out: not empty; the student edition is \
+                 written only into a new or empty folder"
+            ),
+        "{stderr}"
+    );
+    let left: Vec<_> = fs::read_dir(&parent)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(left, ["out"]);
+    assert_eq!(fs::read_to_string(out.join("notes.txt")).unwrap(), "mine");
+}
