@@ -193,8 +193,10 @@ fn no_exercise_answer_is_shown_outside_a_solution_fold() {
                 let stub_region =
                     include::select(&stub_text, found.selector()).unwrap();
                 let only = answer_lines(&reference, &stub_region, &elsewhere);
+                // A student edition holds the stub in src/ too: no answer.
+                let is_reference = reference != stub_region;
                 assert!(
-                    !only.is_empty(),
+                    !(is_reference && only.is_empty()),
                     "{}: {} has no line of its own: the test has no teeth",
                     name(&page),
                     found.argument
