@@ -8,6 +8,12 @@
 //! same tree rasterised at 2× on white. Renders shown in a figure ([`Page::image`]) are
 //! embedded in the SVG as PNG data.
 //!
+//! # Sizes for the book
+//! The book shows a figure at most [`BOOK_COLUMN_PX`] wide at 1:1; its smallest text,
+//! sub- and superscripts included, should be at least [`MIN_TEXT_PX`]. [`render`] measures
+//! the smallest text of every figure ([`Rendered::smallest_text`]) and the SVG file records
+//! it in a comment, `<!-- raystep: smallest text 11.2 px -->`.
+//!
 //! # Label markup
 //! Labels ([`Page::label`] and friends) take a little markup: `_` makes the next character, or
 //! the `{...}` group after it, a subscript (`"P_0"`, `"E_{12}"`); `^` likewise a superscript
@@ -49,7 +55,10 @@ pub use raystep_core::{DVec2, DVec3};
 
 pub use cli::diagram_main;
 pub use error::FigureError;
-pub use output::{Format, Mismatch, Rendered, check_all, render, write_all};
+pub use output::{
+    BOOK_COLUMN_PX, Format, MIN_TEXT_PX, Mismatch, Rendered, check_all, render,
+    smallest_text_comment, write_all,
+};
 pub use page::{Anchor, Page, clip_line};
 pub use projection::Projection;
 pub use side_view::{SideView, camera_pixel};
