@@ -18,7 +18,13 @@
 //! Labels ([`Page::label`] and friends) take a little markup: `_` makes the next character, or
 //! the `{...}` group after it, a subscript (`"P_0"`, `"E_{12}"`); `^` likewise a superscript
 //! (`"x^2"`); `\` makes the next character literal (`"a\_b"`). Greek letters are typed directly
-//! (`"θ"`, `"φ"`), and `<`, `>`, `&` are fine (`"f(x, y) > 0"`).
+//! (`"θ"`, `"φ"`), and `<`, `>`, `&` are fine (`"f(x, y) > 0"`). Chart text ([`chart`])
+//! takes the same markup.
+//!
+//! # Charts
+//! [`chart`] draws with plotters; [`font`] gives a plotters font by its size on the page.
+//! [`LogAxis`] is a log axis labelled in powers of ten that shows zero on a row of its own,
+//! behind an [`AxisBreak`]; [`Labels`] puts point labels where they cover nothing.
 //!
 //! # Example
 //! ```
@@ -34,11 +40,13 @@
 
 mod chapter;
 mod chart;
+mod chart_labels;
 mod cli;
 mod error;
 mod field;
 mod glyphs;
 mod image;
+mod log_axis;
 pub mod numbers;
 mod output;
 mod page;
@@ -48,7 +56,9 @@ mod style;
 mod text;
 
 pub use chapter::{Chapter, Measurement, Renderer, book_figures, measured};
-pub use chart::{ChartArea, ChartError, chart};
+pub use chart::{ChartArea, ChartError, chart, font};
+pub use chart_labels::{Labels, Spot};
+pub use log_axis::{AxisBreak, LogAxis, Ticked, decade};
 /// plotters, re-exported so chapters draw charts with the kit's version.
 pub use plotters;
 pub use raystep_core::{DVec2, DVec3};
