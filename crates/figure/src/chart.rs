@@ -1,11 +1,29 @@
 //! Charts: plotters draws into an SVG string with its SVG backend, and that
 //! SVG becomes a page like any other figure's, so its text is outlined in
-//! the embedded font and its PNG comes from the same tree.
+//! the embedded font and its PNG comes from the same tree. Chart text takes
+//! the same label markup as [`Page::label`] (`"10^{−2}"`, `"t_{min}"`).
 
 use plotters::coord::Shift;
-use plotters::prelude::{DrawingArea, IntoDrawingArea, SVGBackend, WHITE};
+use plotters::prelude::{
+    DrawingArea, FontDesc, FontFamily, FontStyle, IntoDrawingArea, SVGBackend,
+    WHITE,
+};
 
+use crate::text::{markup_spans, unescape_xml};
 use crate::{Figure, Page};
+
+/// plotters' SVG backend writes a font of size s as `font-size` s / 1.24.
+const PLOTTERS_FONT_SCALE: f64 = 1.24;
+
+/// The sans-serif font whose text plotters draws `px` page px tall (its
+/// `font-size`), for every chart text: `label_style(font(15.0))`.
+pub fn font(px: f64) -> FontDesc<'static> {
+    FontDesc::new(
+        FontFamily::SansSerif,
+        px * PLOTTERS_FONT_SCALE,
+        FontStyle::Normal,
+    )
+}
 
 /// The drawing area a chart function draws on.
 pub type ChartArea<'a> = DrawingArea<SVGBackend<'a>, Shift>;
@@ -35,8 +53,37 @@ pub fn chart(
     // plotters writes a whole <svg> element: nested inside the page's own
     // it keeps its coordinates (the sizes match).
     let start = svg.find("<svg").unwrap_or(0);
-    page.raw_svg(&svg[start..]);
+    page.raw_svg(&with_markup(&svg[start..]));
     Ok(Figure::new(name, caption, page))
+}
+
+/// plotters' SVG with the contents of every `<text>` element read as label
+/// markup: sub- and superscripts become `<tspan>`s of the element's size.
+fn with_markup(svg: &str) -> String {
+    let mut out = String::with_capacity(svg.len());
+    let mut rest = svg;
+    while let Some(start) = rest.find("<text") {
+        let Some(open) = rest[start..].find('>').map(|i| start + i + 1) else {
+            break;
+        };
+        let Some(close) = rest[open..].find("</text>").map(|i| open + i) else {
+            break;
+        };
+        let tag = &rest[start..open];
+        let size = tag
+            .split_once(r#"font-size=""#)
+            .and_then(|(_, v)| v.split('"').next())
+            .and_then(|v| v.parse::<f64>().ok())
+            .unwrap_or(16.0);
+        out.push_str(&rest[..open]);
+        out.push_str(&markup_spans(
+            unescape_xml(&rest[open..close]).trim(),
+            size,
+        ));
+        rest = &rest[close..];
+    }
+    out.push_str(rest);
+    out
 }
 
 #[cfg(test)]
@@ -74,5 +121,24 @@ mod tests {
         let svg = String::from_utf8(a.svg).unwrap();
         assert!(!svg.contains("<text"), "text is outlined");
         assert!(svg.contains("<path"));
+    }
+
+    #[test]
+    fn chart_text_takes_label_markup_at_the_font_size_asked() {
+        let figure = chart("markup", "", 200, 100, |area| {
+            area.draw(&Text::new("10^{−2} & t_{min}", (10, 50), font(20.0)))?;
+            Ok(())
+        })
+        .unwrap();
+        let source = figure.page.to_svg_source();
+        assert!(
+            source.contains(
+                r#"10<tspan font-size="14.00" baseline-shift="7.60">−2</tspan> &amp; t<tspan font-size="14.00" baseline-shift="-4.00">min</tspan></text>"#
+            ),
+            "{source}"
+        );
+        let rendered = crate::render(&figure).unwrap();
+        let size = rendered.smallest_text.unwrap();
+        assert!((size - 14.0).abs() < 1e-3, "{size}");
     }
 }

@@ -8,11 +8,23 @@
 //! same tree rasterised at 2× on white. Renders shown in a figure ([`Page::image`]) are
 //! embedded in the SVG as PNG data.
 //!
+//! # Sizes for the book
+//! The book shows a figure at most [`BOOK_COLUMN_PX`] wide at 1:1; its smallest text,
+//! sub- and superscripts included, should be at least [`MIN_TEXT_PX`]. [`render`] measures
+//! the smallest text of every figure ([`Rendered::smallest_text`]) and the SVG file records
+//! it in a comment, `<!-- raystep: smallest text 11.2 px -->`.
+//!
 //! # Label markup
 //! Labels ([`Page::label`] and friends) take a little markup: `_` makes the next character, or
 //! the `{...}` group after it, a subscript (`"P_0"`, `"E_{12}"`); `^` likewise a superscript
 //! (`"x^2"`); `\` makes the next character literal (`"a\_b"`). Greek letters are typed directly
-//! (`"θ"`, `"φ"`), and `<`, `>`, `&` are fine (`"f(x, y) > 0"`).
+//! (`"θ"`, `"φ"`), and `<`, `>`, `&` are fine (`"f(x, y) > 0"`). Chart text ([`chart`])
+//! takes the same markup.
+//!
+//! # Charts
+//! [`chart`] draws with plotters; [`font`] gives a plotters font by its size on the page.
+//! [`LogAxis`] is a log axis labelled in powers of ten that shows zero on a row of its own,
+//! behind an [`AxisBreak`]; [`Labels`] puts point labels where they cover nothing.
 //!
 //! # Example
 //! ```
@@ -28,11 +40,13 @@
 
 mod chapter;
 mod chart;
+mod chart_labels;
 mod cli;
 mod error;
 mod field;
 mod glyphs;
 mod image;
+mod log_axis;
 pub mod numbers;
 mod output;
 mod page;
@@ -42,14 +56,19 @@ mod style;
 mod text;
 
 pub use chapter::{Chapter, Measurement, Renderer, book_figures, measured};
-pub use chart::{ChartArea, ChartError, chart};
+pub use chart::{ChartArea, ChartError, chart, font};
+pub use chart_labels::{Labels, Spot};
+pub use log_axis::{AxisBreak, LogAxis, Ticked, decade};
 /// plotters, re-exported so chapters draw charts with the kit's version.
 pub use plotters;
 pub use raystep_core::{DVec2, DVec3};
 
 pub use cli::diagram_main;
 pub use error::FigureError;
-pub use output::{Format, Mismatch, Rendered, check_all, render, write_all};
+pub use output::{
+    BOOK_COLUMN_PX, Format, MIN_TEXT_PX, Mismatch, Rendered, check_all, render,
+    smallest_text_comment, write_all,
+};
 pub use page::{Anchor, Page, clip_line};
 pub use projection::Projection;
 pub use side_view::{SideView, camera_pixel};

@@ -21,6 +21,16 @@ use crate::error::FigureError;
 /// PNG pixels per page px.
 const PNG_SCALE: f32 = 2.0;
 
+/// The width of the book's content column in CSS px. The book shows a
+/// figure up to this wide at 1:1 (one page px is one CSS px); a wider one
+/// is shrunk, and its text with it. Every figure fits it.
+pub const BOOK_COLUMN_PX: f64 = 900.0;
+
+/// The smallest text a figure may have, in page px (so in CSS px in the
+/// book): sub- and superscripts, tick labels and notes included. Smaller
+/// text is hard to read on a screen.
+pub const MIN_TEXT_PX: f64 = 11.0;
+
 /// Which files to write or check.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Format {
@@ -60,12 +70,19 @@ impl std::str::FromStr for Format {
 }
 
 /// A rendered figure: the SVG file's bytes (text as outlines) and the PNG file's bytes.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Rendered {
     /// The SVG file.
     pub svg: Vec<u8>,
     /// The PNG file (2× the page size).
     pub png: Vec<u8>,
+    /// The page width in page px.
+    pub width: f64,
+    /// The font size of the smallest text on the page in page px (every
+    /// span, sub- and superscripts included, scaled by any transform), or
+    /// `None` for a page without text. The SVG file records it in a comment
+    /// (see [`smallest_text_comment`]).
+    pub smallest_text: Option<f64>,
 }
 
 impl Rendered {
@@ -128,7 +145,12 @@ pub fn render(figure: &Figure) -> Result<Rendered, FigureError> {
         indent: usvg::Indent::Spaces(1),
         ..usvg::WriteOptions::default()
     };
-    let svg = tree.to_string(&write).into_bytes();
+    let smallest_text = smallest_text(tree.root());
+    let svg = with_comment(
+        &tree.to_string(&write),
+        &smallest_text_comment(smallest_text),
+    )
+    .into_bytes();
 
     let width = (tree.size().width() * PNG_SCALE).ceil() as u32;
     let height = (tree.size().height() * PNG_SCALE).ceil() as u32;
@@ -150,7 +172,68 @@ pub fn render(figure: &Figure) -> Result<Rendered, FigureError> {
         figure: figure.name.clone(),
         message: e.to_string(),
     })?;
-    Ok(Rendered { svg, png })
+    Ok(Rendered {
+        svg,
+        png,
+        width: f64::from(tree.size().width()),
+        smallest_text,
+    })
+}
+
+/// The font size of the smallest non-blank text span under `group`, in
+/// page px: each span's size scaled by the text's transform (its area
+/// scale, so a rotation keeps the size).
+fn smallest_text(group: &usvg::Group) -> Option<f64> {
+    let mut smallest: Option<f64> = None;
+    for node in group.children() {
+        let size = match node {
+            usvg::Node::Group(g) => smallest_text(g),
+            usvg::Node::Text(text) => {
+                let t = text.abs_transform();
+                let scale = f64::from((t.sx * t.sy - t.kx * t.ky).abs()).sqrt();
+                text.chunks()
+                    .iter()
+                    .flat_map(|chunk| {
+                        chunk.spans().iter().filter(|span| {
+                            chunk.text()[span.start()..span.end()]
+                                .chars()
+                                .any(|c| !c.is_whitespace())
+                        })
+                    })
+                    .map(|span| f64::from(span.font_size().get()) * scale)
+                    .reduce(f64::min)
+            }
+            _ => None,
+        };
+        if let Some(size) = size {
+            smallest = Some(smallest.map_or(size, |s| s.min(size)));
+        }
+    }
+    smallest
+}
+
+/// The comment the SVG file records its smallest text in, rounded down to
+/// 0.1 px so it never says more than is there:
+/// `<!-- raystep: smallest text 11.2 px -->` (`no text` without text).
+pub fn smallest_text_comment(size: Option<f64>) -> String {
+    match size {
+        // to 4 decimals first: a size of 11.2 is 11.1999998 as an f32
+        Some(size) => {
+            let tenths = ((size * 1e4).round() / 1e3).floor() / 10.0;
+            format!("<!-- raystep: smallest text {tenths:.1} px -->")
+        }
+        None => "<!-- raystep: no text -->".to_string(),
+    }
+}
+
+/// `svg` with `comment` on its own line right after the opening `<svg ...>`
+/// element.
+fn with_comment(svg: &str, comment: &str) -> String {
+    let end = svg
+        .find("<svg")
+        .and_then(|start| svg[start..].find('>').map(|end| start + end + 1))
+        .unwrap_or(0);
+    format!("{}\n{comment}{}", &svg[..end], &svg[end..])
 }
 
 /// Checks that figure names are plain, distinct file stems.

@@ -84,6 +84,38 @@ pub(crate) fn escape_xml(text: &str) -> String {
     out
 }
 
+/// The contents of a `<text>` element of font size `size` showing label
+/// markup `text`: escaped text, scripts as `<tspan>`s.
+pub(crate) fn markup_spans(text: &str, size: f64) -> String {
+    let script = |body: &str, shift: f64| {
+        format!(
+            r#"<tspan font-size="{}" baseline-shift="{}">{}</tspan>"#,
+            num(SCRIPT_SIZE * size),
+            num(shift * size),
+            escape_xml(body)
+        )
+    };
+    let mut s = String::new();
+    for run in parse_markup(text) {
+        match run {
+            Run::Normal(t) => s.push_str(&escape_xml(&t)),
+            Run::Sub(t) => s.push_str(&script(&t, -SUB_SHIFT)),
+            Run::Super(t) => s.push_str(&script(&t, SUPER_SHIFT)),
+        }
+    }
+    s
+}
+
+/// `text` with the XML entities [`escape_xml`] writes turned back into
+/// their characters.
+pub(crate) fn unescape_xml(text: &str) -> String {
+    text.replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&quot;", "\"")
+        .replace("&apos;", "'")
+        .replace("&amp;", "&")
+}
+
 /// How a text line lines up with its `x`: the SVG `text-anchor`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Align {
@@ -114,21 +146,7 @@ pub(crate) fn text_element(
         num(size),
         color.hex()
     );
-    let script = |body: &str, shift: f64| {
-        format!(
-            r#"<tspan font-size="{}" baseline-shift="{}">{}</tspan>"#,
-            num(SCRIPT_SIZE * size),
-            num(shift * size),
-            escape_xml(body)
-        )
-    };
-    for run in parse_markup(text) {
-        match run {
-            Run::Normal(t) => s.push_str(&escape_xml(&t)),
-            Run::Sub(t) => s.push_str(&script(&t, -SUB_SHIFT)),
-            Run::Super(t) => s.push_str(&script(&t, SUPER_SHIFT)),
-        }
-    }
+    s.push_str(&markup_spans(text, size));
     s.push_str("</text>");
     s
 }

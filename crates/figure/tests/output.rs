@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use raystep_figure::{
     Anchor, DVec2, Figure, FigureError, Format, Mismatch, Page, Stroke,
-    check_all, palette, render, write_all,
+    check_all, palette, render, smallest_text_comment, write_all,
 };
 
 fn sample(name: &str) -> Figure {
@@ -57,6 +57,53 @@ fn render_is_deterministic_with_text_outlined() {
     assert!(!svg.contains("<text"), "text was not outlined");
     assert!(svg.contains("<path"));
     assert_eq!(png_size(&a.png), (480, 320));
+}
+
+#[test]
+fn the_smallest_text_is_measured_and_recorded_after_the_svg_element() {
+    // "P_0, θ < φ" at 16 px: its subscript is 0.7 × 16 = 11.2 px
+    let rendered = render(&sample("small")).unwrap();
+    assert_eq!(rendered.width, 240.0);
+    let size = rendered.smallest_text.unwrap();
+    assert!((size - 11.2).abs() < 1e-4, "{size}");
+    let svg = String::from_utf8(rendered.svg).unwrap();
+    let svg_end = svg.find('>').unwrap() + 1;
+    assert!(svg[..svg_end].starts_with("<svg"), "{svg}");
+    assert!(
+        svg[svg_end..]
+            .starts_with("\n<!-- raystep: smallest text 11.2 px -->\n"),
+        "{svg}"
+    );
+
+    // a label inside a scaled group counts at its drawn size
+    let mut page = Page::new(200.0, 100.0);
+    page.label(DVec2::new(10.0, 50.0), "big", Anchor::E);
+    page.raw_svg(
+        r#"<g transform="rotate(30) scale(0.5)"><text x="20" y="40" font-size="20">small</text></g>"#,
+    );
+    let rendered = render(&Figure::new("scaled", "", page)).unwrap();
+    assert!((rendered.smallest_text.unwrap() - 10.0).abs() < 1e-4);
+
+    // a page without text
+    let rendered = render(&Figure::new("blank", "", Page::new(10.0, 10.0)));
+    assert_eq!(rendered.unwrap().smallest_text, None);
+}
+
+#[test]
+fn the_recorded_size_is_rounded_down() {
+    assert_eq!(
+        smallest_text_comment(Some(11.2f32.into())),
+        "<!-- raystep: smallest text 11.2 px -->"
+    );
+    assert_eq!(
+        smallest_text_comment(Some(10.99)),
+        "<!-- raystep: smallest text 10.9 px -->"
+    );
+    assert_eq!(
+        smallest_text_comment(Some(16.0)),
+        "<!-- raystep: smallest text 16.0 px -->"
+    );
+    assert_eq!(smallest_text_comment(None), "<!-- raystep: no text -->");
 }
 
 #[test]

@@ -4,6 +4,9 @@ use std::collections::BTreeMap;
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
+use std::sync::OnceLock;
+
+use raystep_figure::{BOOK_COLUMN_PX, MIN_TEXT_PX};
 
 /// Runs the raystep binary with `args` and returns its output.
 fn raystep(args: &[&str]) -> Output {
@@ -129,15 +132,88 @@ fn a_changed_or_extra_figure_file_is_named() {
     }
 }
 
+/// Every chapter's figures, drawn once into a scratch folder that the
+/// tests below share (drawing them all is the slow part).
+fn every_chapter() -> &'static Path {
+    static DIR: OnceLock<PathBuf> = OnceLock::new();
+    DIR.get_or_init(|| write_all("every", None))
+}
+
+/// The page width of an SVG file (its `<svg width="...">`).
+fn svg_width(svg: &str) -> Option<f64> {
+    let svg = &svg[svg.find("<svg")?..];
+    let tag = &svg[..svg.find('>')?];
+    let (_, value) = tag.split_once(" width=\"")?;
+    value.split('"').next()?.parse().ok()
+}
+
+/// The smallest text an SVG file records in its raystep comment: the size
+/// in px, `Some(None)` for `no text`, or `None` without the comment.
+fn recorded_text(svg: &str) -> Option<Option<f64>> {
+    if svg.contains("<!-- raystep: no text -->") {
+        return Some(None);
+    }
+    let (_, rest) = svg.split_once("<!-- raystep: smallest text ")?;
+    let (value, _) = rest.split_once(" px -->")?;
+    value.parse().ok().map(Some)
+}
+
+/// Every figure fits the book's column, where it is shown 1:1, and its
+/// smallest text (as the SVG file records it) is large enough to read.
+#[test]
+fn every_figure_fits_the_column_with_legible_text() {
+    let mut failures = Vec::new();
+    let mut count = 0;
+    for (path, bytes) in files(every_chapter()) {
+        if path.extension().is_none_or(|e| e != "svg") {
+            continue;
+        }
+        count += 1;
+        let svg = text(&bytes);
+        let width = svg_width(&svg);
+        let smallest = recorded_text(&svg);
+        let fits = width.is_some_and(|w| w <= BOOK_COLUMN_PX);
+        let legible =
+            smallest.is_some_and(|s| s.is_none_or(|s| s >= MIN_TEXT_PX));
+        if !(fits && legible) {
+            let show =
+                |v: Option<f64>| v.map_or("?".into(), |v| format!("{v:.1}"));
+            failures.push(format!(
+                "{:<34} {:>7} {:>10}",
+                path.with_extension("").display(),
+                show(width),
+                match smallest {
+                    Some(None) => "no text".to_string(),
+                    Some(Some(s)) => format!("{s:.1}"),
+                    None => "?".to_string(),
+                }
+            ));
+        }
+    }
+    assert!(count > 0, "no figure drawn");
+    assert!(
+        failures.is_empty(),
+        "{} of {count} figures are wider than {BOOK_COLUMN_PX} px or have \
+         text under {MIN_TEXT_PX} px:\n{:<34} {:>7} {:>10}\n{}",
+        failures.len(),
+        "figure",
+        "width",
+        "text (px)",
+        failures.join("\n")
+    );
+}
+
 /// Every chapter's figures, drawn twice, come out the same, and then
-/// check clean.
+/// check clean. (The second drawing goes to its own folder: the shared one
+/// is only read.)
 #[test]
 fn writing_twice_gives_identical_files_that_check_clean() {
-    let dir = write_all("twice", None);
-    let before = files(&dir);
-    let out = raystep(&["figures", "--out", dir.to_str().unwrap()]);
+    let dir = every_chapter();
+    let before = files(dir);
+    let again = scratch("again");
+    let out = raystep(&["figures", "--out", again.to_str().unwrap()]);
     assert!(out.status.success());
-    assert!(before == files(&dir), "the second run changed the figures");
+    assert!(before == files(&again), "the second run drew other figures");
     // One line per file written, and a summary.
     assert_eq!(text(&out.stdout).lines().count(), before.len() + 1);
     let out = raystep(&["figures", "--check", "--out", dir.to_str().unwrap()]);

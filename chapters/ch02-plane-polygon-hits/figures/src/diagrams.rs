@@ -131,7 +131,7 @@ fn ray_plane_figure() -> Figure {
 
 /// Left: a ray parallel to the plane; right: a ray pointing away from it, hit behind its origin.
 fn parallel_and_behind() -> Figure {
-    let mut page = Page::new(960.0, 420.0)
+    let mut page = Page::new(900.0, 420.0)
         .view(DVec2::new(0.0, 0.0), DVec2::new(16.0, 7.0));
     page.segment(
         DVec2::new(8.0, 0.2),

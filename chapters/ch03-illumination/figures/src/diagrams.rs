@@ -48,7 +48,7 @@ fn basic_idea() -> Figure {
     );
     let eye_at = view.at(camera.eye);
 
-    let mut page = Page::new(960.0, 440.0)
+    let mut page = Page::new(900.0, 440.0)
         .margin(16.0)
         .view(DVec2::new(-0.6, -1.9), DVec2::new(9.2, 3.0));
     // the floor and the other planes, and the spheres the plane cuts
@@ -157,7 +157,8 @@ fn basic_idea() -> Figure {
 
     page.eye(eye_at, view.dir(camera.forward));
     page.label(eye_at + DVec2::new(0.0, -0.12), "eye", Anchor::S);
-    page.label(centre + up + 0.5 * depth, "image plane", Anchor::N);
+    // above left of the plane: the rays there are still below its top
+    page.label(centre + up, "image plane", Anchor::NW);
     let x = 2.4;
     page.text_lines(
         DVec2::new(x, -0.5),
@@ -293,7 +294,7 @@ fn other_rays() -> Figure {
     let left = DVec2::new(7.0, 0.0); // where P is drawn
     let at = |q: DVec3| left + view.at(q) - DVec2::new(0.0, hit.point.y);
     let p = at(hit.point);
-    let mut page = Page::new(1000.0, 430.0)
+    let mut page = Page::new(900.0, 390.0)
         .margin(12.0)
         .view(DVec2::new(0.0, -2.4), DVec2::new(23.0, 6.8));
     let floor = Stroke::new(palette::GREY).width(2.5);
@@ -340,8 +341,9 @@ fn other_rays() -> Figure {
         DVec2::new(10.8, 6.6),
         &Stroke::new(palette::LIGHT_GREY).width(1.5),
     );
+    // right of light 1's label
     page.label(
-        DVec2::new(17.0, 6.4),
+        DVec2::new(17.6, 6.4),
         "shadow rays, each in its vertical plane",
         Anchor::Center,
     );
@@ -435,7 +437,7 @@ fn other_rays() -> Figure {
 /// The scene with each term of the local model on its own, and their sum.
 fn terms() -> Figure {
     let mut world = spheres_world(&spheres_scene());
-    (world.width, world.height) = (208, 117);
+    (world.width, world.height) = (192, 108);
     let term = |pick: fn(&ShadingTerms) -> DVec3| {
         render_with(&world, &RenderOptions::QUIET, |ray| {
             shade(&world, ray).map_or(DVec3::ZERO, |t| pick(&t))

@@ -1,13 +1,15 @@
 //! The chart of chapter 04: wrong pixels against scene scale and against
 //! render time, drawn from `book/src/figures/ch04/acne.csv` (written by
 //! `raystep measure`).
+use raystep_figure::numbers::power;
 use raystep_figure::plotters::prelude::*;
-use raystep_figure::{ChartError, Figure, chart, measured};
+use raystep_figure::{
+    AxisBreak, ChartError, Figure, LogAxis, chart, font, measured,
+};
+
+use ch04::Offset;
 
 use crate::measurements::{AcneRow, CHART_STRATEGIES};
-
-/// Fractions below this are drawn at the chart's floor (log axes have no 0).
-const FLOOR: f64 = 1e-4;
 
 /// One colour per strategy (Okabe–Ito, colour-blind safe).
 const COLOURS: [RGBColor; 5] = [
@@ -18,78 +20,108 @@ const COLOURS: [RGBColor; 5] = [
     RGBColor(0, 158, 115),
 ];
 
+/// How far apart the strategies' lanes in the row of 0 are, in decades.
+const LANE: f64 = 0.18;
+
 /// The chart, or an error naming the CSV file if it is missing or bad.
 pub fn acne_chart() -> Result<Figure, ChartError> {
     let rows: Vec<AcneRow> = measured("ch04", "acne.csv")?;
     chart(
         "acne-chart",
-        "Wrongly shadowed or wrongly lit pixels for each strategy, by scene scale (left) and against render time (right); t_min 1e-4 and scale-aware get none wrong at any scale here, on the bottom edge.",
+        "Wrongly shadowed or wrongly lit pixels for each strategy, by scene scale (top) and against render time (bottom); t_min 10⁻⁴ and the scale-aware offset get none wrong at any scale here (the row 0).",
         900,
-        410,
+        780,
         |area| draw(area, &rows),
     )
 }
 
-/// A y-axis label: the floor reads "0", the rest as powers of ten.
-fn fraction_label(y: &f64) -> String {
-    if *y <= FLOOR {
-        "0".to_string()
-    } else {
-        format!("{y:.0e}")
+/// A strategy as the legend names it: `t_{min} 10^{−4}`.
+fn name(offset: Offset) -> String {
+    match offset {
+        Offset::TMin(0.0) => "none".to_string(),
+        Offset::TMin(eps) => format!("t_{{min}} {}", power(eps)),
+        Offset::AlongNormal(eps) => format!("normal {}", power(eps)),
+        Offset::ScaleAware => "scale-aware".to_string(),
     }
 }
 
+/// The fraction of pixels a run gets wrong.
 fn wrong(row: &AcneRow) -> f64 {
-    (row.acne + row.leaks).max(FLOOR)
+    row.acne + row.leaks
 }
 
 fn draw(
     area: &raystep_figure::ChartArea,
     rows: &[AcneRow],
 ) -> Result<(), ChartError> {
-    // a legend strip across the top, then the two panels
-    let (legend, panels) = area.split_vertically(34);
-    for (i, ((name, _), colour)) in
+    // a legend across the top, then the two panels, one above the other
+    let (legend, panels) = area.split_vertically(64);
+    for (i, ((_, offset), colour)) in
         CHART_STRATEGIES.iter().zip(COLOURS).enumerate()
     {
-        let x = 90 + 160 * i as i32;
+        let x = 20 + 176 * i as i32;
         legend.draw(&PathElement::new(
-            vec![(x, 20), (x + 24, 20)],
+            vec![(x, 18), (x + 28, 18)],
             colour.stroke_width(3),
         ))?;
-        legend.draw(&Text::new(*name, (x + 30, 12), ("sans-serif", 15)))?;
+        legend.draw(&Circle::new((x + 14, 18), 4, colour.filled()))?;
+        legend.draw(&Text::new(name(*offset), (x + 36, 9), font(16.0)))?;
     }
-    let (left, right) = panels.split_horizontally(470);
-    let label_style = ("sans-serif", 15);
-    let max_ms = rows.iter().map(|r| r.millis).fold(0.0, f64::max) * 1.1;
-    let min_ms =
-        rows.iter().map(|r| r.millis).fold(f64::INFINITY, f64::min) * 0.9;
+    legend.draw(&Text::new(
+        "row 0: no pixel wrong; each strategy gets a line of its own there",
+        (20, 40),
+        font(15.0),
+    ))?;
+    let (top, bottom) = panels.split_vertically(370);
 
-    // Left: wrong pixels by scale, one line per strategy.
-    let mut by_scale = ChartBuilder::on(&left)
-        .caption("wrong pixels by scene scale", ("sans-serif", 17))
+    // every run's fraction, 0 included, on one axis for both panels; up to
+    // 1 (every pixel wrong)
+    let y_axis = LogAxis::covering(rows.iter().map(wrong).chain([1.0]));
+    // the strategies that get 0 somewhere each have a lane in the row of 0
+    let zero_lanes: Vec<&str> = CHART_STRATEGIES
+        .iter()
+        .map(|(name, _)| *name)
+        .filter(|name| {
+            rows.iter().any(|r| r.strategy == *name && wrong(r) == 0.0)
+        })
+        .collect();
+    let y_of = |row: &AcneRow| {
+        let lane = zero_lanes.iter().position(|s| *s == row.strategy);
+        match lane {
+            Some(k) if wrong(row) == 0.0 => {
+                let middle = (zero_lanes.len() as f64 - 1.0) / 2.0;
+                y_axis.zero_row() + LANE * (middle - k as f64)
+            }
+            _ => y_axis.at(wrong(row)),
+        }
+    };
+    let of =
+        |name: &'static str| rows.iter().filter(move |r| r.strategy == name);
+
+    // Top: wrong pixels by scale, one line per strategy.
+    let x_axis = LogAxis::covering(rows.iter().map(|r| r.scale));
+    let mut by_scale = ChartBuilder::on(&top)
+        .caption("wrong pixels by scene scale", font(17.0))
         .margin(10)
-        .x_label_area_size(34)
-        .y_label_area_size(56)
-        .build_cartesian_2d(
-            (1e-3f64..1e4f64).log_scale(),
-            (FLOOR..1f64).log_scale(),
-        )?;
+        .margin_right(24)
+        .x_label_area_size(52)
+        .y_label_area_size(72)
+        .build_cartesian_2d(x_axis.range(), y_axis.range())?;
     by_scale
         .configure_mesh()
-        .x_desc("scale")
-        .y_desc("acne + leaks (fraction; 0 at the bottom)")
-        .x_label_formatter(&|x| format!("{x:.0e}"))
-        .y_label_formatter(&fraction_label)
-        .label_style(label_style)
-        .light_line_style(WHITE)
+        .x_desc("scene scale")
+        .y_desc("acne + leaks (fraction)")
+        .x_label_formatter(&|x| x_axis.label(x))
+        .y_label_formatter(&|y| y_axis.label(y))
+        .label_style(font(16.0))
+        .axis_desc_style(font(15.0))
         .draw()?;
+    if let Some(at) = y_axis.break_at() {
+        by_scale.draw_series([AxisBreak::y((x_axis.start(), at))])?;
+    }
     for ((name, _), colour) in CHART_STRATEGIES.iter().zip(COLOURS) {
-        let points: Vec<(f64, f64)> = rows
-            .iter()
-            .filter(|r| r.strategy == *name)
-            .map(|r| (r.scale, wrong(r)))
-            .collect();
+        let points: Vec<(f64, f64)> =
+            of(name).map(|r| (x_axis.at(r.scale), y_of(r))).collect();
         by_scale.draw_series(LineSeries::new(
             points.clone(),
             colour.stroke_width(2),
@@ -97,31 +129,40 @@ fn draw(
         by_scale.draw_series(
             points
                 .into_iter()
-                .map(|p| Circle::new(p, 3, colour.filled())),
+                .map(|p| Circle::new(p, 4, colour.filled())),
         )?;
     }
 
-    // Right: every (strategy, scale) run as a point: time against errors.
-    let mut by_time = ChartBuilder::on(&right)
-        .caption("accuracy against speed", ("sans-serif", 17))
+    // Bottom: every (strategy, scale) run as a point: time against errors.
+    let max_ms = rows.iter().map(|r| r.millis).fold(0.0, f64::max) * 1.05;
+    let min_ms =
+        rows.iter().map(|r| r.millis).fold(f64::INFINITY, f64::min) * 0.95;
+    let mut by_time = ChartBuilder::on(&bottom)
+        .caption("accuracy against speed", font(17.0))
         .margin(10)
-        .x_label_area_size(34)
-        .y_label_area_size(56)
-        .build_cartesian_2d(min_ms..max_ms, (FLOOR..1f64).log_scale())?;
+        .margin_right(24)
+        .x_label_area_size(52)
+        .y_label_area_size(72)
+        .build_cartesian_2d(min_ms..max_ms, y_axis.range())?;
     by_time
         .configure_mesh()
         .x_desc("render time, ms (160×90, one thread)")
-        .y_desc("acne + leaks (fraction; 0 at the bottom)")
-        .y_label_formatter(&fraction_label)
-        .label_style(label_style)
+        .y_desc("acne + leaks (fraction)")
+        .x_labels(10)
+        .x_label_formatter(&|x| format!("{x:.1}"))
+        .y_label_formatter(&|y| y_axis.label(y))
+        .label_style(font(16.0))
+        .axis_desc_style(font(15.0))
         .light_line_style(WHITE)
         .draw()?;
+    if let Some(at) = y_axis.break_at() {
+        by_time.draw_series([AxisBreak::y((min_ms, at))])?;
+    }
     for ((name, _), colour) in CHART_STRATEGIES.iter().zip(COLOURS) {
-        by_time.draw_series(
-            rows.iter()
-                .filter(|r| r.strategy == *name)
-                .map(|r| Circle::new((r.millis, wrong(r)), 4, colour.filled())),
-        )?;
+        by_time
+            .draw_series(of(name).map(|r| {
+                Circle::new((r.millis, y_of(r)), 5, colour.filled())
+            }))?;
     }
     Ok(())
 }

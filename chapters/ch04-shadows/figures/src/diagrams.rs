@@ -267,7 +267,7 @@ fn acne() -> Figure {
     ];
     let (pw, ph) = (f64::from(w), f64::from(h));
     let (gap, side) = (30.0, 14.0);
-    let (top, mid, bottom) = (56.0, 30.0, 70.0);
+    let (top, mid, bottom) = (62.0, 34.0, 82.0);
     let width = 4.0 * pw + 3.0 * gap + 2.0 * side;
     let height = top + ph + mid + ph + bottom;
     let mut page = Page::new(width, height);
@@ -310,10 +310,10 @@ fn acne() -> Figure {
         );
         // headings: the strategy, then the scale and why it fails there
         page.label_sized(
-            DVec2::new(centre, render_y + ph + 28.0),
+            DVec2::new(centre, render_y + ph + 32.0),
             name,
             Anchor::N,
-            16.0,
+            17.0,
             palette::BLACK,
         );
         let scale_line = if offset == Offset::ScaleAware {
@@ -327,7 +327,7 @@ fn acne() -> Figure {
             DVec2::new(centre, render_y + ph + 8.0),
             &scale_line,
             Anchor::N,
-            14.0,
+            16.0,
             palette::BLACK.mix(palette::GREY, 0.5),
         );
         // the verdict under the map, measured at this size
@@ -345,9 +345,9 @@ fn acne() -> Figure {
             let scales =
                 format!("scales {}, 1 and {}", power(tiny), power(huge));
             page.text_lines(
-                DVec2::new(x, map_y - 14.0),
-                17.0,
-                14.0,
+                DVec2::new(x, map_y - 16.0),
+                20.0,
+                16.0,
                 &[
                     ("0 pixels wrong at", palette::BLACK),
                     (&scales, palette::BLACK),
@@ -366,14 +366,14 @@ fn acne() -> Figure {
             if hidden {
                 lines.push(("too few to see above", palette::BLACK));
             }
-            page.text_lines(DVec2::new(x, map_y - 14.0), 17.0, 14.0, &lines);
+            page.text_lines(DVec2::new(x, map_y - 16.0), 20.0, 16.0, &lines);
         }
     }
     page.label_sized(
         DVec2::new(side, map_y + ph + mid / 2.0),
         "below: the pixels each strategy gets wrong (orange: acne, blue: leaks), as shadow\\_errors counts them",
         Anchor::E,
-        13.0,
+        15.0,
         palette::BLACK,
     );
     Figure::new(
@@ -605,16 +605,18 @@ fn offsets() -> Figure {
         ("ScaleAware", Offset::ScaleAware),
     ];
 
-    let mut page = Page::new(1000.0, 620.0)
-        .view(DVec2::new(0.0, -0.7), DVec2::new(20.0, 11.2));
+    // two rows of two panels, then the number line of the ulps
+    let mut page = Page::new(900.0, 990.0)
+        .view(DVec2::new(0.0, -1.3), DVec2::new(18.0, 18.6));
     // the magnified drawing: surface at 0, blocker at 1, P 0.4 below
     let (drawn_blocker, drawn_p) = (1.0, -0.55);
     let dir = DVec2::new(0.42, 1.0).normalize();
     let top = 3.0;
     let px = -0.2; // where P is drawn in each panel
-    let base = 7.2; // where each panel's surface is drawn
+    let half = 4.0; // half the width of a panel's drawing
+    let bases = [14.6, 7.3]; // where each row's surface is drawn
     for (k, &(name, offset)) in strategies.iter().enumerate() {
-        let cx = 2.5 + 5.0 * k as f64;
+        let (cx, base) = (4.5 + 9.0 * (k % 2) as f64, bases[k / 2]);
         let at = |x: f64, y: f64| DVec2::new(cx + x, base + y);
         // the real shadow ray and what it meets
         let (ray, interval) = shadow_ray(point, normal, light, offset);
@@ -625,11 +627,14 @@ fn offsets() -> Figure {
             blocker.intersect(&ray, Interval::FORWARD).map(|hit| hit.t);
         let lift = ray.origin.y - 1.0; // height of the origin above the surface
 
-        if k > 0 {
+        // a line between the panels of a row, and under each row
+        let rule = Stroke::new(palette::LIGHT_GREY).width(1.5);
+        if k % 2 == 1 {
+            page.segment(at(-4.5, -3.1), at(-4.5, top + 0.9), &rule);
             page.segment(
-                at(-2.5, -3.0),
-                at(-2.5, top + 0.9),
-                &Stroke::new(palette::LIGHT_GREY).width(1.5),
+                DVec2::new(0.2, base - 3.4),
+                DVec2::new(17.8, base - 3.4),
+                &rule,
             );
         }
         page.label_sized(
@@ -641,13 +646,13 @@ fn offsets() -> Figure {
         );
         // blocker and surface
         page.segment(
-            at(-2.3, drawn_blocker),
-            at(2.3, drawn_blocker),
+            at(-half, drawn_blocker),
+            at(half, drawn_blocker),
             &Stroke::new(palette::GREY).width(4.0),
         );
         page.segment(
-            at(-2.3, 0.0),
-            at(2.3, 0.0),
+            at(-half, 0.0),
+            at(half, 0.0),
             &Stroke::new(palette::BLACK).width(2.0),
         );
         let p = at(px, drawn_p);
@@ -680,7 +685,7 @@ fn offsets() -> Figure {
                     skip - DVec2::new(0.15, 0.0),
                     "t < ε: ignored",
                     Anchor::W,
-                    14.0,
+                    16.0,
                     palette::BLACK,
                 );
             }
@@ -724,7 +729,7 @@ fn offsets() -> Figure {
                     at(px + 0.15, -0.3),
                     &format!("{INT_SCALE} ulps"),
                     Anchor::E,
-                    14.0,
+                    16.0,
                     LIFT_COLOR,
                 );
             } else {
@@ -732,7 +737,7 @@ fn offsets() -> Figure {
                     at(px, 0.7),
                     "ε·N",
                     Anchor::W,
-                    14.0,
+                    16.0,
                     LIFT_COLOR,
                 );
             }
@@ -776,27 +781,27 @@ fn offsets() -> Figure {
         }
         let lines: Vec<(&str, Color)> =
             lines.iter().map(|(t, c)| (t.as_str(), *c)).collect();
-        page.text_lines(at(-2.3, -1.25), 0.4, 15.0, &lines);
+        page.text_lines(at(-half, -1.3), 0.45, 16.0, &lines);
         if k == 0 {
             page.label_sized(
-                at(-2.3, 0.0),
+                at(-half, 0.0),
                 "surface y = 1",
                 Anchor::NE,
-                13.0,
+                16.0,
                 palette::BLACK,
             );
             page.label_sized(
-                at(-2.3, drawn_blocker),
+                at(-half, drawn_blocker),
                 &format!("blocker {} above", power(GAP)),
                 Anchor::NE,
-                13.0,
+                16.0,
                 palette::GREY,
             );
             page.label_sized(
                 p + DVec2::new(0.25, 0.0),
                 &format!("{} below", power(below)),
                 Anchor::E,
-                13.0,
+                16.0,
                 palette::BLACK,
             );
         }
@@ -806,17 +811,25 @@ fn offsets() -> Figure {
     // spacing doubles at every power of two.
     let axis_y = 1.3;
     let x0 = 0.7;
-    let unit = 2.25; // drawing units per toy unit
+    let unit = 2.0; // drawing units per toy unit
     let ax = |x: f64| DVec2::new(x0 + unit * x, axis_y);
     let up = |h: f64| DVec2::new(0.0, h);
     let toy_origin = 0.5;
     let toy_ulp = |x: f64| 2f64.powi(x.log2().floor() as i32) / 8.0;
-    page.label_sized(
-        DVec2::new(x0 - 0.3, axis_y + 2.05),
-        "ScaleAware moves each coordinate by ulps, the gaps between neighbouring numbers; they double at every power of 2",
-        Anchor::E,
-        15.0,
-        palette::BLACK,
+    page.text_lines(
+        DVec2::new(x0 - 0.3, axis_y + 2.35),
+        0.45,
+        16.0,
+        &[
+            (
+                "ScaleAware moves each coordinate by ulps, the gaps between",
+                palette::BLACK,
+            ),
+            (
+                "neighbouring numbers; they double at every power of 2",
+                palette::BLACK,
+            ),
+        ],
     );
     page.rect(
         ax(0.0) - up(0.35),
@@ -854,7 +867,7 @@ fn offsets() -> Figure {
             ax(x) - up(0.25),
             &text,
             Anchor::S,
-            14.0,
+            16.0,
             palette::BLACK,
         );
     }
@@ -870,7 +883,7 @@ fn offsets() -> Figure {
             ax((x + to) / 2.0) + up(0.45),
             "2 ulps",
             Anchor::N,
-            14.0,
+            16.0,
             LIFT_COLOR,
         );
     }
@@ -884,19 +897,20 @@ fn offsets() -> Figure {
         ax(0.0) + up(1.35),
         "near 0: a fixed step",
         Anchor::E,
-        14.0,
+        16.0,
         LIFT_COLOR,
     );
     // the real f64 lifts, from offset_scale_aware (only x moves: N = +x)
     let lift =
         |x: f64| offset_scale_aware(DVec3::new(x, 0.5, 0.5), DVec3::X).x - x;
     let lines = [
+        "drawn: 3 bits after the point and a lift of 2 ulps;".to_string(),
         format!(
-            "drawn: 3 bits after the point and a lift of 2 ulps; f64 has 52 bits and lifts INT\\_SCALE = {INT_SCALE} ulps:"
+            "f64 has 52 bits and lifts INT\\_SCALE = {INT_SCALE} ulps: x = 1.25 moves {},",
+            power(lift(1.25)),
         ),
         format!(
-            "x = 1.25 moves {}, x = 5·10^6 moves {}, |x| < ORIGIN = 1/{} a fixed {}",
-            power(lift(1.25)),
+            "x = 5·10^6 moves {}, |x| < ORIGIN = 1/{} a fixed {}",
             power(lift(5e6)),
             1.0 / ORIGIN,
             power(lift(0.01))
@@ -904,7 +918,7 @@ fn offsets() -> Figure {
     ];
     let lines: Vec<(&str, Color)> =
         lines.iter().map(|l| (l.as_str(), palette::BLACK)).collect();
-    page.text_lines(DVec2::new(x0 - 0.3, axis_y - 0.95), 0.42, 15.0, &lines);
+    page.text_lines(DVec2::new(x0 - 0.3, axis_y - 1.1), 0.45, 16.0, &lines);
     Figure::new(
         "offsets",
         &format!(

@@ -76,7 +76,7 @@ fn reflection() -> Figure {
     let normal_part = flat(dn * n);
     let kept = d2 - normal_part;
 
-    let mut page = Page::new(960.0, 400.0)
+    let mut page = Page::new(900.0, 400.0)
         .view(DVec2::new(-2.5, -1.45), DVec2::new(7.7, 2.5));
     let thin = Stroke::new(palette::BLACK).width(1.2);
     let len = 1.8;
@@ -137,11 +137,15 @@ fn reflection() -> Figure {
         p + s * kept,
         &Stroke::new(palette::BLACK).width(2.0).dashed(),
     );
+    // under the arrow, where the mirror leaves out its hatching, clear of
+    // D and of (D·N)N
+    let under = p + DVec2::new(0.6 * s * kept.x, 0.0);
+    page.label_sized(under, "D − (D·N)N", Anchor::S, 15.0, palette::BLACK);
     page.label_sized(
-        p + DVec2::new(0.36, 0.0),
-        "D − (D·N)N: kept",
-        Anchor::NE,
-        14.0,
+        under - DVec2::new(0.0, 0.24),
+        "kept",
+        Anchor::S,
+        15.0,
         palette::BLACK,
     );
     // ...and its part along N, (D·N)N, changes sign.
@@ -259,7 +263,7 @@ fn ray_tree() -> Figure {
             at(DVec3::new(1.9, 0.0, -5.3)),
             "mirror walls, seen from above",
             Anchor::N,
-            13.0,
+            14.0,
             palette::GREY,
         );
         page.circle(
@@ -272,7 +276,7 @@ fn ray_tree() -> Figure {
             at(DVec3::ZERO),
             "ball",
             Anchor::Center,
-            13.0,
+            14.0,
             palette::GREY,
         );
         // the shadow rays: thin branches toward the light (the caption
@@ -398,7 +402,7 @@ fn draw_rays(
                     to + outside,
                     &ray.path.depth.to_string(),
                     Anchor::Center,
-                    12.0,
+                    14.0,
                     colour,
                 );
             }
@@ -413,7 +417,7 @@ fn draw_rays(
                     from + 1.2 * direction,
                     "to the sky",
                     Anchor::pointing(direction),
-                    13.0,
+                    14.0,
                     colour,
                 );
             }

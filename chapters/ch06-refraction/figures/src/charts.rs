@@ -2,14 +2,12 @@
 //! split at all are from the exact Fresnel split, material by material,
 //! against what they cost in render time and per call; drawn from
 //! `book/src/figures/ch06/fresnel.csv` (written by `raystep measure`).
-use raystep_figure::numbers::floored;
 use raystep_figure::plotters::prelude::*;
-use raystep_figure::{ChartError, Figure, chart, measured};
+use raystep_figure::{
+    AxisBreak, ChartError, Figure, LogAxis, chart, font, measured,
+};
 
 use crate::measurements::{CHART_MODES, FresnelRow};
-
-/// Errors below this are drawn at the chart's floor (log axes have no 0).
-const FLOOR: f64 = 0.01;
 
 /// One colour per mode, in [`CHART_MODES`] order (Okabe–Ito, colour-blind
 /// safe): exact black, Schlick orange, off blue.
@@ -26,21 +24,19 @@ const NAMES: [&str; 3] = [
     "Fresnel::Off (constant kt)",
 ];
 
+/// How far apart the modes' lanes in the row of 0 are, in decades.
+const LANE: f64 = 0.18;
+
 /// The chart, or an error naming the CSV file if it is missing or bad.
 pub fn fresnel_chart() -> Result<Figure, ChartError> {
     let rows: Vec<FresnelRow> = measured("ch06", "fresnel.csv")?;
     chart(
         "fresnel-chart",
-        "One ball of each material rendered with the exact Fresnel split, with Schlick's approximation and with no split: left, the RMSE against the exact image (8-bit levels); middle, that error against the measured render time; right, the measured time of one call of each reflectance formula.",
-        1000,
-        420,
+        "One ball of each material rendered with the exact Fresnel split, with Schlick's approximation and with no split: top left, the RMSE against the exact image (8-bit levels); top right, the measured time of one call of each reflectance formula; below, the error against the measured render time.",
+        900,
+        800,
         |area| draw(area, &rows),
     )
-}
-
-/// The RMSE as drawn: 0 sits on the floor.
-fn rmse(row: &FresnelRow) -> f64 {
-    row.rmse.max(FLOOR)
 }
 
 /// The materials in the CSV, by index of refraction: (name, index).
@@ -78,99 +74,124 @@ fn material_label(materials: &[(String, f64)], y: f64) -> String {
 /// Each mode's marker a few px above or below the slot, so that equal
 /// values stay visible side by side.
 fn nudge(mode: usize) -> i32 {
-    4 * (mode as i32 - 1)
+    5 * (mode as i32 - 1)
 }
 
 fn draw(
     area: &raystep_figure::ChartArea,
     rows: &[FresnelRow],
 ) -> Result<(), ChartError> {
-    // a legend strip across the top, then three panels
-    let (legend, panels) = area.split_vertically(34);
+    // a legend strip across the top, two panels by material, and the
+    // accuracy against speed below them
+    let (legend, panels) = area.split_vertically(64);
     for (i, (name, colour)) in NAMES.iter().zip(COLOURS).enumerate() {
-        let x = 90 + 300 * i as i32;
-        legend.draw(&Circle::new((x + 12, 20), 5, colour.filled()))?;
-        legend.draw(&Text::new(*name, (x + 26, 12), ("sans-serif", 15)))?;
+        let x = [20, 330, 560][i];
+        legend.draw(&Circle::new((x + 8, 18), 5, colour.filled()))?;
+        legend.draw(&Text::new(*name, (x + 22, 9), font(16.0)))?;
     }
+    legend.draw(&Text::new(
+        "0: no error at all (Fresnel::Exact is the reference); in the lower chart each mode has a line of its own at 0",
+        (20, 40),
+        font(15.0),
+    ))?;
+    let (top, bottom) = panels.split_vertically(380);
+    let (left, right) = top.split_horizontally(450);
     let materials = materials(rows);
     let slots = -0.5..(materials.len() as f64 - 0.5);
     let labels = materials.len();
-    let panels = panels.split_evenly((1, 3));
-    let label_style = ("sans-serif", 14);
-    let max_rmse = rows.iter().map(|r| r.rmse).fold(1.0, f64::max) * 2.0;
+    let errors = LogAxis::covering(rows.iter().map(|r| r.rmse));
     let of_mode = |k: usize| {
         let name = CHART_MODES[k].0;
         rows.iter().filter(move |r| r.mode == name)
     };
 
     // Left: the error of each mode, material by material.
-    let mut c = ChartBuilder::on(&panels[0])
-        .caption("error against Fresnel::Exact", ("sans-serif", 17))
+    let mut c = ChartBuilder::on(&left)
+        .caption("error against Fresnel::Exact", font(17.0))
         .margin(10)
-        .x_label_area_size(34)
-        .y_label_area_size(96)
-        .build_cartesian_2d((FLOOR..max_rmse).log_scale(), slots.clone())?;
+        .x_label_area_size(52)
+        .y_label_area_size(136)
+        .build_cartesian_2d(errors.range(), slots.clone())?;
     c.configure_mesh()
-        .x_desc("RMSE, 8-bit levels (0 at the left)")
+        .x_desc("RMSE, 8-bit levels")
         .y_labels(labels)
-        .x_label_formatter(&|y: &f64| floored(*y, FLOOR))
+        .x_label_formatter(&|x| errors.label(x))
         .y_label_formatter(&|y| material_label(&materials, *y))
-        .label_style(label_style)
+        .label_style(font(16.0))
+        .axis_desc_style(font(15.0))
         .light_line_style(WHITE)
         .draw()?;
+    if let Some(at) = errors.break_at() {
+        c.draw_series([AxisBreak::x((at, slots.start))])?;
+    }
     for (k, colour) in COLOURS.iter().enumerate() {
         c.draw_series(of_mode(k).map(|r| {
-            EmptyElement::at((rmse(r), slot(&materials, r)))
-                + Circle::new((0, nudge(k)), 4, colour.filled())
+            EmptyElement::at((errors.at(r.rmse), slot(&materials, r)))
+                + Circle::new((0, nudge(k)), 5, colour.filled())
         }))?;
-    }
-
-    // Middle: every (material, mode) as a point: render time against error.
-    let max_ms = rows.iter().map(|r| r.millis).fold(0.0, f64::max) * 1.1;
-    let min_ms =
-        rows.iter().map(|r| r.millis).fold(f64::INFINITY, f64::min) * 0.9;
-    let mut c = ChartBuilder::on(&panels[1])
-        .caption("accuracy against speed", ("sans-serif", 17))
-        .margin(10)
-        .x_label_area_size(34)
-        .y_label_area_size(52)
-        .build_cartesian_2d(min_ms..max_ms, (FLOOR..max_rmse).log_scale())?;
-    c.configure_mesh()
-        .x_desc("render time, ms (160×90, one thread)")
-        .y_desc("RMSE, 8-bit levels (0 at the bottom)")
-        .x_labels(5)
-        .y_label_formatter(&|y: &f64| floored(*y, FLOOR))
-        .label_style(label_style)
-        .light_line_style(WHITE)
-        .draw()?;
-    for (k, colour) in COLOURS.iter().enumerate() {
-        c.draw_series(
-            of_mode(k)
-                .map(|r| Circle::new((r.millis, rmse(r)), 4, colour.filled())),
-        )?;
     }
 
     // Right: one call of each formula, material by material.
     let max_ns =
         rows.iter().map(|r| r.nanos_per_call).fold(0.0, f64::max) * 1.15;
-    let mut c = ChartBuilder::on(&panels[2])
-        .caption("one call of the reflectance", ("sans-serif", 17))
+    let mut c = ChartBuilder::on(&right)
+        .caption("one call of the reflectance", font(17.0))
         .margin(10)
-        .x_label_area_size(34)
-        .y_label_area_size(96)
+        .margin_right(24)
+        .x_label_area_size(52)
+        .y_label_area_size(136)
         .build_cartesian_2d(0f64..max_ns, slots)?;
     c.configure_mesh()
         .x_desc("ns per call (median of batches)")
         .x_labels(5)
         .y_labels(labels)
+        .x_label_formatter(&|x| format!("{x:.0}"))
         .y_label_formatter(&|y| material_label(&materials, *y))
-        .label_style(label_style)
+        .label_style(font(16.0))
+        .axis_desc_style(font(15.0))
         .light_line_style(WHITE)
         .draw()?;
     for (k, colour) in COLOURS.iter().enumerate() {
         c.draw_series(of_mode(k).map(|r| {
             EmptyElement::at((r.nanos_per_call, slot(&materials, r)))
-                + Circle::new((0, nudge(k)), 4, colour.filled())
+                + Circle::new((0, nudge(k)), 5, colour.filled())
+        }))?;
+    }
+
+    // Below: every (material, mode) as a point: render time against error,
+    // the zeros of each mode on a lane of their own.
+    let max_ms = rows.iter().map(|r| r.millis).fold(0.0, f64::max) * 1.05;
+    let min_ms =
+        rows.iter().map(|r| r.millis).fold(f64::INFINITY, f64::min) * 0.95;
+    let mut c = ChartBuilder::on(&bottom)
+        .caption("accuracy against speed", font(17.0))
+        .margin(10)
+        .margin_right(24)
+        .x_label_area_size(52)
+        .y_label_area_size(72)
+        .build_cartesian_2d(min_ms..max_ms, errors.range())?;
+    c.configure_mesh()
+        .x_desc("render time, ms (160×90, one thread)")
+        .y_desc("RMSE, 8-bit levels")
+        .x_labels(10)
+        .x_label_formatter(&|x| format!("{x:.1}"))
+        .y_label_formatter(&|y| errors.label(y))
+        .label_style(font(16.0))
+        .axis_desc_style(font(15.0))
+        .light_line_style(WHITE)
+        .draw()?;
+    if let Some(at) = errors.break_at() {
+        c.draw_series([AxisBreak::y((min_ms, at))])?;
+    }
+    for (k, colour) in COLOURS.iter().enumerate() {
+        let lane = LANE * (1.0 - k as f64);
+        c.draw_series(of_mode(k).map(|r| {
+            let y = if r.rmse == 0.0 {
+                errors.zero_row() + lane
+            } else {
+                errors.at(r.rmse)
+            };
+            Circle::new((r.millis, y), 5, colour.filled())
         }))?;
     }
     Ok(())

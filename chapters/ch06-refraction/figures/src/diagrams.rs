@@ -77,9 +77,9 @@ fn snell() -> Figure {
     let materials = ["water", "glass", "diamond"];
     let n_theta = CAMERA_MEDIUM;
     let (panel, gap) = (3.2, 0.4);
-    let (top, bottom) = (1.45, -1.65);
+    let (top, bottom) = (1.45, -1.95);
     let width_world = 3.0 * panel + 2.0 * gap;
-    let mut page = Page::new(1000.0, 360.0).margin(10.0).view(
+    let mut page = Page::new(900.0, 310.0).margin(10.0).view(
         DVec2::new(-panel / 2.0, bottom),
         DVec2::new(width_world - panel / 2.0, top),
     );
@@ -91,7 +91,7 @@ fn snell() -> Figure {
         let (left, right) = (p.x - panel / 2.0, p.x + panel / 2.0);
         // the two media: vacuum above, the material below
         page.rect(
-            DVec2::new(left, bottom + 0.35),
+            DVec2::new(left, bottom + 0.62),
             DVec2::new(right, 0.0),
             Some(MEDIUM_FILL),
             None,
@@ -114,8 +114,9 @@ fn snell() -> Figure {
             "Snell's law: sin θ / sin φ = n_φ / n_θ"
         );
         // the normal, both ways, dashed
+        // (below the medium's label above)
         page.segment(
-            p + 1.25 * n,
+            p + 1.05 * n,
             p - 1.25 * n,
             &Stroke::new(role::NORMAL).width(1.5).dashed(),
         );
@@ -154,29 +155,32 @@ fn snell() -> Figure {
             DVec2::new(left + 0.05, top - 0.2),
             &format!("vacuum, n_θ = {n_theta}"),
             Anchor::E,
-            15.0,
+            16.0,
             palette::BLACK,
         );
         page.text_lines(
-            DVec2::new(left + 0.05, bottom + 0.85),
+            DVec2::new(left + 0.05, bottom + 1.12),
             0.27,
-            15.0,
+            16.0,
             &[
                 (material, palette::BLACK),
                 (&format!("n_φ = {n_phi}"), palette::BLACK),
             ],
         );
-        page.label_sized(
-            DVec2::new(p.x, bottom + 0.12),
-            &format!(
-                "sin {} / sin {} = {} = n_φ / n_θ",
-                degrees(theta),
-                degrees(phi),
-                fixed(ratio, 3)
-            ),
-            Anchor::Center,
-            15.0,
-            palette::BLACK,
+        page.text_lines(
+            DVec2::new(left + 0.05, bottom + 0.4),
+            0.27,
+            16.0,
+            &[
+                (
+                    &format!("sin {} / sin {}", degrees(theta), degrees(phi)),
+                    palette::BLACK,
+                ),
+                (
+                    &format!("= {} = n_φ / n_θ", fixed(ratio, 3)),
+                    palette::BLACK,
+                ),
+            ],
         );
     }
     Figure::new(
@@ -193,9 +197,9 @@ fn snell() -> Figure {
 /// angle: the refracted ray grazes the surface.
 fn critical_angles() -> Figure {
     let (cell, row_height) = (3.0, 2.45);
-    let columns = 4;
-    let mut page = Page::new(1000.0, 430.0).margin(8.0).view(
-        DVec2::new(0.0, -2.0 * row_height),
+    let columns = 3;
+    let mut page = Page::new(900.0, 738.0).margin(8.0).view(
+        DVec2::new(0.0, -3.0 * row_height),
         DVec2::new(columns as f64 * cell, 0.0),
     );
     let thin = Stroke::new(palette::BLACK).width(1.2);
@@ -238,14 +242,14 @@ fn critical_angles() -> Figure {
             DVec2::new(left + 0.04, floor + 0.15),
             &format!("n_θ = {n_theta}"),
             Anchor::E,
-            15.0,
+            16.0,
             palette::BLACK,
         );
         page.label_sized(
             DVec2::new(right - 0.04, p.y + 0.2),
             "vacuum",
             Anchor::W,
-            13.0,
+            15.0,
             palette::NOTE,
         );
         match critical_angle(n_theta, n_phi) {
@@ -274,7 +278,7 @@ fn critical_angles() -> Figure {
                     DVec2::new(right - 0.04, corner.y - 0.45),
                     "n_θ = n_φ, no ray bends",
                     Anchor::W,
-                    14.0,
+                    16.0,
                     palette::NOTE,
                 );
             }
@@ -345,28 +349,32 @@ fn critical_angles() -> Figure {
                     DVec2::new(right - 0.04, corner.y - 0.45),
                     &format!("sin θ_c = {n_phi} / {n_theta}"),
                     Anchor::W,
-                    14.0,
+                    16.0,
                     palette::NOTE,
                 );
             }
         }
         page.point(p, palette::BLACK);
     }
-    // the eighth cell: the key
-    let key = DVec2::new(3.0 * cell + 0.15, -row_height - 0.25);
+    // the last two cells: the key
+    let key = DVec2::new(cell + 0.15, -2.0 * row_height - 0.35);
     page.text_lines(
         key,
         0.27,
-        14.0,
+        16.0,
         &[
-            ("below: the material, n_θ", palette::BLACK),
-            ("above: vacuum, n_φ = 1", palette::BLACK),
+            (
+                "below: the material, n_θ; above: vacuum, n_φ = 1",
+                palette::BLACK,
+            ),
             ("blue: the ray inside, at θ_c", role::RAY),
-            ("green: the refracted ray, from", TRANSMIT_COLOR),
-            ("refract just below θ_c: it", TRANSMIT_COLOR),
-            ("grazes the surface, φ = 90°", TRANSMIT_COLOR),
-            ("dashed: past θ_c refract gives", palette::PURPLE),
-            ("None; all light is reflected", palette::PURPLE),
+            (
+                "green: the refracted ray, from refract just below θ_c:",
+                TRANSMIT_COLOR,
+            ),
+            ("it grazes the surface, φ = 90°", TRANSMIT_COLOR),
+            ("dashed: past θ_c refract gives None;", palette::PURPLE),
+            ("all light is reflected", palette::PURPLE),
         ],
     );
     let list: Vec<String> = by_index()
@@ -388,7 +396,7 @@ fn critical_angles() -> Figure {
 /// The reflectance chart: exact Fresnel and Schlick against the angle.
 mod reflectance {
     use raystep_figure::plotters::prelude::*;
-    use raystep_figure::{ChartError, Figure};
+    use raystep_figure::{ChartError, Figure, Ticked, font};
 
     use ch06::{CAMERA_MEDIUM, critical_angle, fresnel, schlick};
 
@@ -428,37 +436,48 @@ mod reflectance {
         raystep_figure::chart(
             "reflectance",
             "The fraction R of light reflected at the surface of each material against the angle of incidence θ, by the exact Fresnel equations (solid, fresnel) and by Schlick's approximation (dashed, schlick). Left: entering the material from vacuum; R rises from R₀ at normal incidence to 1 at grazing incidence. Right: leaving it into vacuum; R reaches 1 at the critical angle, and past it all light is reflected. Vacuum's exact R is 0 at every angle, but Schlick's rises to 1 at grazing angles. Air (n = 1.0003) is left out: its curves lie on vacuum's except in the last 1.4° before 90°.",
-            1000,
-            460,
+            900,
+            550,
             draw,
         )
     }
 
     fn draw(area: &raystep_figure::ChartArea) -> Result<(), ChartError> {
-        let (legend, panels) = area.split_vertically(36);
+        // the legend: the materials on one line, the two formulas below,
+        // then what the dots mark
+        let (legend, panels) = area.split_vertically(94);
         for (k, (name, colour)) in CURVES.iter().enumerate() {
-            let x = 30 + 110 * k as i32;
+            let x = 20 + 120 * k as i32;
             legend.draw(&Rectangle::new(
-                [(x, 16), (x + 22, 20)],
+                [(x, 14), (x + 24, 19)],
                 colour.filled(),
             ))?;
-            legend.draw(&Text::new(*name, (x + 28, 10), ("sans-serif", 15)))?;
+            legend.draw(&Text::new(*name, (x + 30, 7), font(16.0)))?;
         }
-        let x = 30 + 110 * CURVES.len() as i32 + 10;
+        let x = 20;
         legend.draw(&PathElement::new(
-            [(x, 18), (x + 28, 18)],
+            [(x, 46), (x + 28, 46)],
             BLACK.stroke_width(2),
         ))?;
-        legend.draw(&Text::new("exact", (x + 34, 10), ("sans-serif", 15)))?;
-        let x = x + 100;
+        legend.draw(&Text::new("exact (fresnel)", (x + 36, 37), font(16.0)))?;
+        let x = 240;
         for dash in 0..3 {
             let x0 = x + 11 * dash;
             legend.draw(&PathElement::new(
-                [(x0, 18), (x0 + 6, 18)],
+                [(x0, 46), (x0 + 6, 46)],
                 BLACK.stroke_width(2),
             ))?;
         }
-        legend.draw(&Text::new("Schlick", (x + 40, 10), ("sans-serif", 15)))?;
+        legend.draw(&Text::new(
+            "Schlick's approximation (schlick)",
+            (x + 36, 37),
+            font(16.0),
+        ))?;
+        legend.draw(&Text::new(
+            "● right: the critical angle θ_c; past it R = 1 for both, total internal reflection",
+            (20, 67),
+            font(16.0),
+        ))?;
 
         let panels = panels.split_evenly((1, 2));
         let sides = [
@@ -467,18 +486,26 @@ mod reflectance {
         ];
         for (panel, (title, entering)) in panels.iter().zip(sides) {
             let mut c = ChartBuilder::on(panel)
-                .caption(title, ("sans-serif", 18))
+                .caption(title, font(17.0))
                 .margin(12)
-                .x_label_area_size(40)
-                .y_label_area_size(50)
-                .build_cartesian_2d(0f64..90f64, 0f64..1.02f64)?;
+                .margin_right(22)
+                .x_label_area_size(52)
+                .y_label_area_size(60)
+                .build_cartesian_2d(
+                    Ticked::new(
+                        0.0..90.0,
+                        (0..=6).map(|k| 15.0 * f64::from(k)).collect(),
+                    ),
+                    0f64..1.02f64,
+                )?;
             c.configure_mesh()
-                .x_desc("θ, angle of incidence (degrees)")
+                .x_desc("θ, angle of incidence")
                 .y_desc("R, reflected fraction")
-                .x_labels(10)
                 .y_labels(6)
                 .x_label_formatter(&|x| format!("{x:.0}°"))
-                .label_style(("sans-serif", 14))
+                .y_label_formatter(&|y| format!("{y:.1}"))
+                .label_style(font(16.0))
+                .axis_desc_style(font(15.0))
                 .light_line_style(WHITE)
                 .draw()?;
             for (name, colour) in CURVES {
@@ -515,22 +542,6 @@ mod reflectance {
                     )))?;
                 }
             }
-            if !entering {
-                for (k, line) in [
-                    "● the critical angle θc:",
-                    "past it R = 1 for both,",
-                    "total internal reflection",
-                ]
-                .into_iter()
-                .enumerate()
-                {
-                    c.draw_series(std::iter::once(Text::new(
-                        line,
-                        (52.0, 0.78 - 0.06 * k as f64),
-                        ("sans-serif", 15),
-                    )))?;
-                }
-            }
         }
         Ok(())
     }
@@ -548,7 +559,7 @@ fn materials() -> Figure {
         render(&world, &DEFAULT_STOP, Fresnel::Exact, &RenderOptions::QUIET)
             .expect("a small render");
     let (pw, ph) = (f64::from(w), f64::from(h));
-    let (side, top, bottom) = (12.0, 12.0, 52.0);
+    let (side, top, bottom) = (2.0, 12.0, 52.0);
     let mut page = Page::new(pw + 2.0 * side, ph + top + bottom);
     page.image(
         DVec2::new(side, bottom),
@@ -675,7 +686,7 @@ fn bubble_views(world: &World) -> Vec<BubbleView> {
 fn bubble() -> Figure {
     let mut world = ch03::parse(BUBBLE_SCENE, "bubble.toml")
         .expect("the figure\'s scene builds");
-    (world.width, world.height) = (480, 270);
+    (world.width, world.height) = (432, 243);
     let (w, h) = (world.width, world.height);
     let (image, counts) =
         render(&world, &DEFAULT_STOP, Fresnel::Exact, &RenderOptions::QUIET)
@@ -699,7 +710,7 @@ fn bubble() -> Figure {
         }
     });
     let (pw, ph) = (f64::from(w), f64::from(h));
-    let (side, gap, top, bottom) = (10.0, 24.0, 34.0, 60.0);
+    let (side, gap, top, bottom) = (6.0, 16.0, 34.0, 62.0);
     let mut page = Page::new(2.0 * pw + gap + 2.0 * side, ph + top + bottom);
     for (k, (picture, title)) in [
         (&image, "bubble.toml, exact Fresnel split"),
@@ -729,8 +740,8 @@ fn bubble() -> Figure {
     let percent = |n: usize| 100.0 * n as f64 / (entered + reflected) as f64;
     page.text_lines(
         DVec2::new(side, bottom - 16.0),
-        20.0,
-        14.0,
+        21.0,
+        15.0,
         &[
             (
                 &format!(

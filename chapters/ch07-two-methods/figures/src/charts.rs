@@ -2,11 +2,11 @@
 //! scene against its number of triangles, on log–log axes, with each
 //! method's fitted growth; drawn from `book/src/figures/ch07/scaling.csv`
 //! (written by `raystep measure`).
-use raystep_figure::numbers::superscript;
+use raystep_figure::decade;
 use raystep_figure::plotters::element::DashedPathElement;
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::plotters::style::text_anchor::{HPos, Pos, VPos};
-use raystep_figure::{ChartError, Figure, book_figures, chart, measured};
+use raystep_figure::{ChartError, Figure, book_figures, chart, font, measured};
 
 use crate::measurements::{CHART_SIZE, RASTERIZE, RAYCAST, ScalingRow};
 
@@ -161,13 +161,11 @@ pub fn scaling_chart() -> Result<Figure, ChartError> {
     )
 }
 
-/// An axis label: powers of ten from 10⁴ on as 10⁴, 10⁵.
+/// An axis label (label markup): powers of ten from 10⁴ on as `10^{4}`.
 fn power_label(x: &f64) -> String {
     let exponent = x.log10().round();
     if exponent >= 4.0 && (x / 10f64.powf(exponent) - 1.0).abs() < 1e-9 {
-        let raised: String =
-            format!("{exponent}").chars().map(superscript).collect();
-        format!("10{raised}")
+        decade(exponent as i32)
     } else if *x >= 1.0 {
         format!("{x:.0}")
     } else {
@@ -184,7 +182,7 @@ fn draw(
     let mut c = ChartBuilder::on(area)
         .margin(14)
         .margin_right(24)
-        .x_label_area_size(44)
+        .x_label_area_size(58)
         .y_label_area_size(64)
         .build_cartesian_2d(
             (3f64..3e5).log_scale(),
@@ -197,8 +195,8 @@ fn draw(
         ))
         .x_label_formatter(&power_label)
         .y_label_formatter(&power_label)
-        .label_style(("sans-serif", 15))
-        .axis_desc_style(("sans-serif", 16))
+        .label_style(font(16.0))
+        .axis_desc_style(font(16.0))
         .light_line_style(WHITE)
         .draw()?;
 
@@ -249,7 +247,7 @@ fn draw(
     }
 
     // which stage each column of points is: n above the ray-cast dots
-    let small = ("sans-serif", 13).into_font().color(&GREY);
+    let small = font(15.0).color(&GREY);
     for (k, row) in cast.balls.iter().enumerate() {
         let text = if k == 0 {
             "alone".to_string()
@@ -265,13 +263,14 @@ fn draw(
                 ),
         ))?;
     }
+    // the bunny's label to the left of its marker, clear of n = 4's
     if let Some(bunny) = cast.bunny {
         c.draw_series(std::iter::once(
             EmptyElement::at(at(bunny))
                 + Text::new(
                     "bunny",
-                    (0, -12),
-                    small.clone().pos(Pos::new(HPos::Center, VPos::Bottom)),
+                    (-12, 0),
+                    small.clone().pos(Pos::new(HPos::Right, VPos::Center)),
                 ),
         ))?;
     }
@@ -306,10 +305,7 @@ fn draw(
                 + Text::new(
                     text,
                     (6 * side, 0),
-                    ("sans-serif", 15)
-                        .into_font()
-                        .color(&GREY)
-                        .pos(Pos::new(h, VPos::Center)),
+                    font(16.0).color(&GREY).pos(Pos::new(h, VPos::Center)),
                 ),
         ))?;
     }
@@ -325,8 +321,7 @@ fn legend(
     raster: &Method,
 ) -> Result<(), ChartError> {
     let (x, y) = (110, 34);
-    let style = ("sans-serif", 16);
-    let script = ("sans-serif", 12);
+    let style = font(16.0).color(&BLACK);
     let entries = [
         (
             "ray casting: each pixel × each object",
@@ -349,28 +344,13 @@ fn legend(
         area.draw(&Text::new(
             *name,
             (x + 42, row),
-            style
-                .into_font()
-                .color(&BLACK)
-                .pos(Pos::new(HPos::Left, VPos::Center)),
+            style.pos(Pos::new(HPos::Left, VPos::Center)),
         ))?;
-        // "time ∝ N" ending at a fixed x, then the exponent raised after it
-        let end = x + 430;
+        // the fit's exponent raised (label markup)
         area.draw(&Text::new(
-            "fit: time ∝ N",
-            (end, row),
-            style
-                .into_font()
-                .color(&BLACK)
-                .pos(Pos::new(HPos::Right, VPos::Center)),
-        ))?;
-        area.draw(&Text::new(
-            format!("{:.2}", method.fit.b),
-            (end + 1, row - 6),
-            script
-                .into_font()
-                .color(&BLACK)
-                .pos(Pos::new(HPos::Left, VPos::Center)),
+            format!("fit: time ∝ N^{{{:.2}}}", method.fit.b),
+            (x + 400, row),
+            style.pos(Pos::new(HPos::Left, VPos::Center)),
         ))?;
     }
     let row = y + 56;
@@ -387,20 +367,14 @@ fn legend(
             raster.cost.per_triangle * 1e6
         ),
         (x + 42, row),
-        style
-            .into_font()
-            .color(&BLACK)
-            .pos(Pos::new(HPos::Left, VPos::Center)),
+        style.pos(Pos::new(HPos::Left, VPos::Center)),
     ))?;
     let row = y + 84;
     area.draw(&TriangleMarker::new((x + 15, row), 8, GREY.filled()))?;
     area.draw(&Text::new(
         "the Stanford bunny (not in the fits)",
         (x + 42, row),
-        style
-            .into_font()
-            .color(&BLACK)
-            .pos(Pos::new(HPos::Left, VPos::Center)),
+        style.pos(Pos::new(HPos::Left, VPos::Center)),
     ))?;
     Ok(())
 }
@@ -452,8 +426,8 @@ mod tests {
         assert_eq!(power_label(&0.5), "0.5");
         assert_eq!(power_label(&10.0), "10");
         assert_eq!(power_label(&1000.0), "1000");
-        assert_eq!(power_label(&1e4), "10⁴");
-        assert_eq!(power_label(&1e5), "10⁵");
+        assert_eq!(power_label(&1e4), "10^{4}");
+        assert_eq!(power_label(&1e5), "10^{5}");
         assert_eq!(power_label(&20_000.0), "20000");
     }
 

@@ -307,11 +307,13 @@ fn loops() -> Figure {
     let tests = ray_tests(&stage);
     let (raster, _) = rasterize(&stage);
 
-    let cell = 38.0;
+    // the two loops one above the other, each grid with its counts on
+    // its right
+    let cell = 50.0;
     let (gw, gh) = (f64::from(w) * cell, f64::from(h) * cell);
-    let (side, gap, top, bottom) = (20.0, 56.0, 64.0, 116.0);
-    let width = 2.0 * side + 2.0 * gw + gap;
-    let height = top + gh + bottom;
+    let (side, top, below) = (20.0, 48.0, 30.0);
+    let panel = top + gh + below;
+    let (width, height) = (900.0, 2.0 * panel);
     let mut page = Page::new(width, height);
     let left = Grid {
         top_left: DVec2::new(side, height - top),
@@ -320,14 +322,15 @@ fn loops() -> Figure {
         height: h,
     };
     let right = Grid {
-        top_left: DVec2::new(side + gw + gap, height - top),
+        top_left: DVec2::new(side, height - panel - top),
         ..left
     };
+    let notes_x = side + gw + 24.0;
     let final_color = |c: u32, r: u32| {
         raster.id_at(c, r).map(|i| tint(TRIANGLE_COLORS[i % 3]))
     };
 
-    // Left: object order.
+    // Top: object order.
     page.label_sized(
         DVec2::new(side, height - 22.0),
         "rasterization: for each triangle, for each pixel it covers",
@@ -352,9 +355,9 @@ fn loops() -> Figure {
             let centre = left.centre(column, row);
             let lines = list.len() as f64;
             let (step_y, size) = if list.len() > 2 {
-                (11.0, 10.0)
+                (14.0, 13.0)
             } else {
-                (14.0, 12.0)
+                (17.0, 15.0)
             };
             for (k, (step, v)) in list.iter().enumerate() {
                 let y =
@@ -387,8 +390,8 @@ fn loops() -> Figure {
                         palette::NOTE,
                     );
                     page.segment(
-                        at - DVec2::new(10.0, 0.0),
-                        at + DVec2::new(10.0, 0.0),
+                        at - DVec2::new(14.0, 0.0),
+                        at + DVec2::new(14.0, 0.0),
                         &Stroke::new(palette::NOTE).width(1.2),
                     );
                 }
@@ -397,9 +400,9 @@ fn loops() -> Figure {
     }
     left.frame(&mut page);
 
-    // Right: image order.
+    // Bottom: image order.
     page.label_sized(
-        DVec2::new(right.top_left.x, height - 22.0),
+        DVec2::new(side, height - panel - 22.0),
         "ray casting: for each pixel, for each triangle",
         Anchor::E,
         17.0,
@@ -421,19 +424,19 @@ fn loops() -> Figure {
             let i = (row * w + column) as usize;
             let centre = right.centre(column, row);
             page.label_sized(
-                centre + DVec2::new(0.0, 7.0),
+                centre + DVec2::new(0.0, 9.0),
                 &(i + 1).to_string(),
                 Anchor::Center,
-                11.0,
+                14.0,
                 palette::NOTE,
             );
             // one box per triangle tested: filled if the ray hits it,
             // framed in black if it is the closest
             for (k, t) in tests[i].iter().enumerate() {
-                let x = centre.x + (k as f64 - 1.0) * 10.0;
+                let x = centre.x + (k as f64 - 1.0) * 13.0;
                 let (lo, hi) = (
-                    DVec2::new(x - 4.0, centre.y - 13.0),
-                    DVec2::new(x + 4.0, centre.y - 5.0),
+                    DVec2::new(x - 5.0, centre.y - 17.0),
+                    DVec2::new(x + 5.0, centre.y - 7.0),
                 );
                 let square =
                     [lo, DVec2::new(hi.x, lo.y), hi, DVec2::new(lo.x, hi.y)];
@@ -479,64 +482,50 @@ fn loops() -> Figure {
             )
         })
         .collect();
-    let y = bottom - 26.0;
-    page.text_lines(
-        DVec2::new(side, y),
-        21.0,
-        14.0,
+    let lines = |page: &mut Page, y: f64, lines: &[String]| {
+        let lines: Vec<(&str, Color)> =
+            lines.iter().map(|l| (l.as_str(), palette::BLACK)).collect();
+        page.text_lines(DVec2::new(notes_x, y), 21.0, 15.0, &lines);
+    };
+    lines(
+        &mut page,
+        left.top_left.y - 10.0,
         &[
-            (
-                &format!("steps in drawing order: {}", ranges.join(", ")),
-                palette::BLACK,
-            ),
-            (
-                &format!("tested {tested} pixel centres (the triangles' bounding boxes),"),
-                palette::BLACK,
-            ),
-            (
-                &format!(
-                    "covered {covered}, shaded {shaded}: {rejected} rejected by the z test (×),"
-                ),
-                palette::BLACK,
-            ),
-            (
-                &format!(
-                    "{overdrawn} shaded and later drawn over (struck out); {shown} pixels shown"
-                ),
-                palette::BLACK,
-            ),
+            "steps in drawing order:".to_string(),
+            ranges.join(", "),
+            String::new(),
+            format!("tested: {tested} pixel centres,"),
+            "those in the triangles' boxes".to_string(),
+            format!("covered: {covered}"),
+            format!("shaded: {shaded}"),
+            format!("× rejected by the z test: {rejected}"),
+            format!("struck out, drawn over: {overdrawn}"),
+            format!("pixels shown: {shown}"),
         ],
     );
-    page.text_lines(
-        DVec2::new(right.top_left.x, y),
-        21.0,
-        14.0,
+    lines(
+        &mut page,
+        right.top_left.y - 10.0,
         &[
-            (
-                "pixels in image order 1–96; boxes: the ray's tests of A, B, C",
-                palette::BLACK,
-            ),
-            (
-                "(filled: hit; framed in black: the closest, kept)",
-                palette::BLACK,
-            ),
-            (
-                &format!(
-                    "{pixels} rays × {n} triangles = {} ray–triangle tests,",
-                    pixels * n
-                ),
-                palette::BLACK,
-            ),
-            (
-                &format!("{hits} hits; {shown} pixels shown, each shaded once"),
-                palette::BLACK,
-            ),
+            format!("pixels in image order 1–{pixels}"),
+            String::new(),
+            "boxes: each ray's tests".to_string(),
+            "of A, B and C".to_string(),
+            "filled: a hit".to_string(),
+            "framed in black: the closest,".to_string(),
+            "kept".to_string(),
+            String::new(),
+            format!("{pixels} rays × {n} triangles"),
+            format!("= {} ray–triangle tests", pixels * n),
+            format!("{hits} hits"),
+            format!("{shown} pixels shown, each"),
+            "shaded once".to_string(),
         ],
     );
     Figure::new(
         "loops",
         &format!(
-            "The lecture's two loops on the same three triangles at {w} × {h} pixels (A at the back, B in front, C between them; outlines: the triangles on screen). Left, rasterization in object order: triangle by triangle, the rasterizer tests the pixel centres of its bounding box, and numbers the ones it covers in the order it visits them; the z test rejects the pixels of C that B hides (×), and B and C draw over A (struck out). Right, ray casting in image order: pixel by pixel, the ray is tested against every triangle and the closest hit is kept. Both end with the same image: {shown} pixels of the {pixels} show a triangle."
+            "The lecture's two loops on the same three triangles at {w} × {h} pixels (A at the back, B in front, C between them; outlines: the triangles on screen). Top, rasterization in object order: triangle by triangle, the rasterizer tests the pixel centres of its bounding box, and numbers the ones it covers in the order it visits them; the z test rejects the pixels of C that B hides (×), and B and C draw over A (struck out). Below, ray casting in image order: pixel by pixel, the ray is tested against every triangle and the closest hit is kept. Both end with the same image: {shown} pixels of the {pixels} show a triangle."
         ),
         page,
     )
@@ -568,14 +557,15 @@ fn coverage() -> Figure {
     let (w, h) = (14, 10);
     let a = [SHARED_S, SHARED_E, A_CORNER];
     let b = [SHARED_S, B_CORNER, SHARED_E];
-    let cell = 36.0;
+    // the grid, centred, and under it what it shows in two columns
+    let cell = 48.0;
     let (gw, gh) = (f64::from(w) * cell, f64::from(h) * cell);
-    let (side, top, bottom, legend) = (16.0, 16.0, 16.0, 420.0);
-    let width = side + gw + legend;
-    let height = top + gh + bottom;
+    let (top, legend) = (16.0, 236.0);
+    let width = 900.0;
+    let height = top + gh + legend;
     let mut page = Page::new(width, height);
     let grid = Grid {
-        top_left: DVec2::new(side, height - top),
+        top_left: DVec2::new((width - gw) / 2.0, height - top),
         cell,
         width: w,
         height: h,
@@ -620,7 +610,7 @@ fn coverage() -> Figure {
             grid.at(tip),
             &format!("f_{}", k + 1),
             Anchor::pointing(DVec2::new(n.x, -n.y)),
-            15.0,
+            17.0,
             shade(cb),
         );
     }
@@ -640,7 +630,7 @@ fn coverage() -> Figure {
         grid.at(mid + 1.1 * na),
         "f_A",
         Anchor::pointing(DVec2::new(na.x, -na.y)),
-        15.0,
+        17.0,
         shade(ca),
     );
 
@@ -711,7 +701,7 @@ fn coverage() -> Figure {
         None,
         Some(&Stroke::new(palette::BLACK).width(1.5)),
     );
-    page.label_sized(grid.at(q), "Q", Anchor::SE, 15.0, palette::BLACK);
+    page.label_sized(grid.at(q), "Q", Anchor::SE, 16.0, palette::BLACK);
 
     // the owners of the shared edge, from owns_boundary
     let (b_from, b_to) = *b_edges
@@ -726,16 +716,10 @@ fn coverage() -> Figure {
     assert!(on_edge.iter().all(|&(_, b)| b), "B draws the shared edge");
     let pair = |v: DVec2| format!("({}, {})", signed(v.x, 6), signed(v.y, 6));
 
-    let x = side + gw + 24.0;
-    let lines: Vec<(String, Color)> = vec![
-        (
-            "edge functions of B (pixel coordinates,".to_string(),
-            palette::BLACK,
-        ),
-        (
-            "y down): each positive on its arrow's side".to_string(),
-            palette::BLACK,
-        ),
+    let black = |t: &str| (t.to_string(), palette::BLACK);
+    let left: Vec<(String, Color)> = vec![
+        black("edge functions of B (pixel coordinates,"),
+        black("y down): each positive on its arrow's side"),
         (
             format!(
                 "at Q: f_1 = {}, f_2 = {}, f_3 = {}",
@@ -746,46 +730,33 @@ fn coverage() -> Figure {
             shade(cb),
         ),
         ("all > 0: B covers Q".to_string(), shade(cb)),
-        (String::new(), palette::BLACK),
-        (
-            format!("{} centres lie on the shared edge S–E:", on_edge.len()),
-            palette::BLACK,
-        ),
-        (
-            "f = 0 there for A and for B, exactly".to_string(),
-            palette::BLACK,
-        ),
-        (
-            "(large dots, in the colour of the".to_string(),
-            palette::BLACK,
-        ),
-        ("triangle that draws them)".to_string(), palette::BLACK),
-        (String::new(), palette::BLACK),
-        (
-            "owns\\_boundary: the inward normal".to_string(),
-            palette::BLACK,
-        ),
-        (
-            format!("A: n = {}, n.x < 0: A does not own it", pair(na)),
-            shade(ca),
-        ),
+        black(""),
+        black(&format!(
+            "{} centres lie on the shared edge S–E:",
+            on_edge.len()
+        )),
+        black("f = 0 there for A and for B, exactly"),
+        black("(large dots, in the colour of the"),
+        black("triangle that draws them)"),
+    ];
+    let right: Vec<(String, Color)> = vec![
+        black("owns\\_boundary: the inward normal"),
+        (format!("A: n = {}, n.x < 0:", pair(na)), shade(ca)),
+        ("A does not own it".to_string(), shade(ca)),
         (
             format!("B: n = {}, n.x > 0: B owns it", pair(nb)),
             shade(cb),
         ),
-        (String::new(), palette::BLACK),
-        (
-            format!(
-                "covered: A {by_a}, B {by_b} (with the {} on the edge)",
-                on_edge.len()
-            ),
-            palette::BLACK,
-        ),
-        ("no centre twice, none left out".to_string(), palette::BLACK),
+        black(""),
+        black(&format!("covered: A {by_a}, B {by_b}")),
+        black(&format!("(B with the {} on the edge)", on_edge.len())),
+        black("no centre twice, none left out"),
     ];
-    let lines: Vec<(&str, Color)> =
-        lines.iter().map(|(t, c)| (t.as_str(), *c)).collect();
-    page.text_lines(DVec2::new(x, height - top - 14.0), 22.0, 15.0, &lines);
+    for (x, lines) in [(20.0, left), (480.0, right)] {
+        let lines: Vec<(&str, Color)> =
+            lines.iter().map(|(t, c)| (t.as_str(), *c)).collect();
+        page.text_lines(DVec2::new(x, legend - 24.0), 22.0, 16.0, &lines);
+    }
     Figure::new(
         "coverage",
         &format!(
@@ -836,7 +807,7 @@ fn depth() -> Figure {
     let far = finite.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let background = buffers.depth.len() - finite.len();
     let (pw, ph) = (f64::from(w), f64::from(h));
-    let (side, gap, top, bottom) = (16.0, 16.0, 36.0, 88.0);
+    let (side, gap, top, bottom) = (16.0, 16.0, 36.0, 116.0);
     let width = 2.0 * side + 2.0 * pw + gap;
     let height = top + ph + bottom;
     let mut page = Page::new(width, height);
@@ -871,7 +842,7 @@ fn depth() -> Figure {
         palette::BLACK,
     );
     // the grey scale under the depth image, and the background's colour
-    let (bar_lo, bar_hi) = (DVec2::new(x1, 62.0), DVec2::new(x1 + pw, 76.0));
+    let (bar_lo, bar_hi) = (DVec2::new(x1, 84.0), DVec2::new(x1 + pw, 98.0));
     let steps = 320;
     page.image(
         bar_lo,
@@ -899,17 +870,17 @@ fn depth() -> Figure {
         DVec2::new(bar_lo.x, bar_lo.y - 4.0),
         &format!("z = {}, nearest", fixed(near, 2)),
         Anchor::SE,
-        13.0,
+        15.0,
         palette::BLACK,
     );
     page.label_sized(
         DVec2::new(bar_hi.x, bar_lo.y - 4.0),
         &format!("z = {}, farthest", fixed(far, 2)),
         Anchor::SW,
-        13.0,
+        15.0,
         palette::BLACK,
     );
-    let sw = DVec2::new(x1, 12.0);
+    let sw = DVec2::new(x1, 16.0);
     page.polygon(
         &[
             sw,
@@ -924,40 +895,31 @@ fn depth() -> Figure {
         sw + DVec2::new(14.0, 7.0),
         "+∞: nothing drawn, the background",
         Anchor::E,
-        13.0,
+        15.0,
         palette::BLACK,
     );
-    page.text_lines(
-        DVec2::new(side, 68.0),
-        20.0,
-        13.0,
-        &[
-            (
-                &format!(
-                    "{} triangles: {} pixel tests, {} covered,",
-                    counts.triangles,
-                    grouped(counts.tested),
-                    grouped(counts.covered)
-                ),
-                palette::NOTE,
-            ),
-            (
-                &format!(
-                    "{} passed the z test and were shaded;",
-                    grouped(counts.shaded)
-                ),
-                palette::NOTE,
-            ),
-            (
-                &format!(
-                    "{} of {} pixels show the background",
-                    grouped(background as u64),
-                    grouped(u64::from(w * h))
-                ),
-                palette::NOTE,
-            ),
-        ],
-    );
+    let lines = [
+        format!(
+            "{} triangles: {} pixel tests,",
+            counts.triangles,
+            grouped(counts.tested)
+        ),
+        format!(
+            "{} covered, {} passed",
+            grouped(counts.covered),
+            grouped(counts.shaded)
+        ),
+        "the z test and were shaded;".to_string(),
+        format!(
+            "{} of {} pixels show",
+            grouped(background as u64),
+            grouped(u64::from(w * h))
+        ),
+        "the background".to_string(),
+    ];
+    let lines: Vec<(&str, Color)> =
+        lines.iter().map(|l| (l.as_str(), palette::NOTE)).collect();
+    page.text_lines(DVec2::new(side, bottom - 16.0), 20.0, 15.0, &lines);
     Figure::new(
         "depth",
         &format!(
@@ -1072,7 +1034,7 @@ fn agreement() -> Figure {
     let (pw, ph) = (f64::from(w) * scale, f64::from(h) * scale);
     let fan_cell = pw / f64::from(fw);
     let fph = f64::from(fh) * fan_cell;
-    let (side, gap, heading, foot) = (16.0, 16.0, 30.0, 48.0);
+    let (side, gap, heading, foot) = (16.0, 48.0, 32.0, 56.0);
     let width = 2.0 * side + 3.0 * pw + 2.0 * gap;
     let height = heading + ph + foot + heading + fph + foot;
     let mut page = Page::new(width, height);
@@ -1083,18 +1045,21 @@ fn agreement() -> Figure {
             DVec2::new(x + pw / 2.0, y + 8.0),
             text,
             Anchor::N,
-            15.0,
+            16.0,
             palette::BLACK,
         );
     };
-    let note = |page: &mut Page, x: f64, y: f64, text: &str| {
-        page.label_sized(
-            DVec2::new(x + pw / 2.0, y - 8.0),
-            text,
-            Anchor::S,
-            13.0,
-            palette::NOTE,
-        );
+    // a note of one or two lines under a picture
+    let note = |page: &mut Page, x: f64, y: f64, lines: &[&str]| {
+        for (k, line) in lines.iter().enumerate() {
+            page.label_sized(
+                DVec2::new(x + pw / 2.0, y - 6.0 - 20.0 * k as f64),
+                line,
+                Anchor::S,
+                16.0,
+                palette::NOTE,
+            );
+        }
     };
 
     // row 1
@@ -1141,23 +1106,22 @@ fn agreement() -> Figure {
         &mut page,
         columns[0],
         y1,
-        &format!(
-            "ids differ at {} of {} pixels",
-            shapes_agree.differing(),
-            grouped(u64::from(w * h))
-        ),
+        &[
+            &format!("ids differ at {} of", shapes_agree.differing()),
+            &format!("{} pixels", grouped(u64::from(w * h))),
+        ],
     );
     note(
         &mut page,
         columns[1],
         y1,
-        &format!("{bytes_differ} pixels differ in 8-bit colour"),
+        &[&format!("{bytes_differ} pixels differ"), "in 8-bit colour"],
     );
     note(
         &mut page,
         columns[2],
         y1,
-        &format!("largest difference {}", scientific(largest, true)),
+        &["largest difference", &scientific(largest, true)],
     );
 
     // row 2
@@ -1199,26 +1163,20 @@ fn agreement() -> Figure {
         &mut page,
         columns[0],
         y2,
-        &format!(
-            "{} triangles, corners on pixel centres",
-            fan.triangles.len()
-        ),
+        &[
+            &format!("{} triangles, corners", fan.triangles.len()),
+            "on pixel centres",
+        ],
     );
-    note(
-        &mut page,
-        columns[1],
-        y2,
-        &format!("{} × {} pixels", fw, fh),
-    );
+    note(&mut page, columns[1], y2, &[&format!("{fw} × {fh} pixels")]);
     note(
         &mut page,
         columns[2],
         y2,
-        &format!(
-            "{} of {} differ, all on edges",
-            fan_agree.differing(),
-            fw * fh
-        ),
+        &[
+            &format!("{} of {} differ,", fan_agree.differing(), fw * fh),
+            "all on edges",
+        ],
     );
     Figure::new(
         "agreement",
