@@ -403,7 +403,10 @@ fn visit(tab: &Arc<Tab>, book: &Path, page: &Path) -> Result<Seen, String> {
                 _ => None,
             };
             if let Some(message) = message {
-                sink.lock().unwrap().push(message);
+                let mut seen = sink.lock().unwrap();
+                if !seen.contains(&message) {
+                    seen.push(message);
+                }
             }
         },
     ))
