@@ -81,10 +81,15 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
 
     let index = out.join("index.html");
     println!("the book is in {}: open {}", shown(&out), shown(&index));
-    if options.open {
-        opener::open(&index).map_err(|e| {
-            Error::Usage(format!("cannot open {}: {e}", shown(&index)))
-        })?;
+    // The book is built either way: a machine without a browser only
+    // gets a note.
+    if options.open
+        && let Err(error) = opener::open(&index)
+    {
+        eprintln!(
+            "note: no browser opened ({error}); open {} yourself",
+            shown(&index)
+        );
     }
     Ok(ExitCode::SUCCESS)
 }
