@@ -79,12 +79,43 @@ pub fn inline(line: &str) -> Result<String, String> {
             if latex.trim().is_empty() {
                 return Err("empty formula `$$` inside a line".into());
             }
-            out.push_str(&for_markdown(&mathml(latex, MathDisplay::Inline)?));
-            rest = &body[close + 1..];
+            let math = for_markdown(&mathml(latex, MathDisplay::Inline)?);
+            // The words touching the formula stay on its line.
+            let pre = out.split_off(glued_end(&out));
+            let after = &body[close + 1..];
+            let post = &after[..glued_start(after)];
+            out.push_str(&format!(
+                r#"<span class="nowrap">{pre}{math}{post}</span>"#
+            ));
+            rest = &after[post.len()..];
         }
     }
     out.push_str(rest);
     Ok(out)
+}
+
+/// Characters that a browser may break a line at next to a formula (an
+/// inline `<math>` is one unbreakable box), and that can sit inside an
+/// HTML span without changing how Markdown reads them: not spaces, not
+/// Markdown's own `*`, `_`, `` ` ``, `[`, `]`, `\`, `<`, `>`, `$`.
+fn glues(c: char) -> bool {
+    !c.is_whitespace() && !"*_`[]\\<>$|".contains(c)
+}
+
+/// Where the glued characters at the end of `text` begin (a byte offset).
+fn glued_end(text: &str) -> usize {
+    text.char_indices()
+        .rev()
+        .take_while(|(_, c)| glues(*c))
+        .last()
+        .map_or(text.len(), |(i, _)| i)
+}
+
+/// How many bytes of glued characters `text` starts with.
+fn glued_start(text: &str) -> usize {
+    text.char_indices()
+        .find(|(_, c)| !glues(*c))
+        .map_or(text.len(), |(i, _)| i)
 }
 
 /// Where the formula in `body` ends: the first `$` not escaped by `\`.
@@ -122,9 +153,26 @@ mod tests {
     #[test]
     fn inline_formulas_become_mathml_and_code_is_left_alone() {
         let line = inline(r"at $t = -d$, see `a $b$` and \$5").unwrap();
-        assert!(line.starts_with("at <math><mi>t</mi>"), "{line}");
+        assert!(
+            line.starts_with(r#"at <span class="nowrap"><math><mi>t</mi>"#),
+            "{line}"
+        );
+        assert!(line.contains("</math>,</span> see"), "{line}");
         assert!(line.contains("`a $b$`"), "{line}");
         assert!(line.ends_with(r"and \$5"), "{line}");
+    }
+
+    #[test]
+    fn punctuation_touching_a_formula_stays_on_its_line() {
+        let line = inline(r"see ($x$’s value), or **$y$**").unwrap();
+        assert!(
+            line.contains(r#"see <span class="nowrap">(<math>"#),
+            "{line}"
+        );
+        assert!(line.contains("</math>’s</span> value)"), "{line}");
+        // Markdown's own characters are never pulled into the span.
+        assert!(line.contains(r#"**<span class="nowrap"><math>"#), "{line}");
+        assert!(line.ends_with("</math></span>**"), "{line}");
     }
 
     #[test]
