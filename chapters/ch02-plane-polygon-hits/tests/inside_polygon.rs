@@ -113,12 +113,17 @@ fn degenerate_and_nan_input_is_outside() {
          expected outside (f is NaN, so no edge has it on its inner side), \
          got inside"
     );
-    assert!(
-        !inside_convex(&tri[..2], p(0.1, 0.0)),
-        "the point (0.1, 0) in the \"polygon\" (0, 0), (1, 0) of only two \
-         vertices: expected outside (fewer than 3 vertices hold nothing), \
-         got inside"
-    );
+    for (vertices, q, name) in [
+        (&tri[..2], p(0.1, 0.0), "(0, 0), (1, 0), two vertices"),
+        (&tri[..1], p(0.0, 0.0), "(0, 0), one vertex"),
+        (&tri[..0], p(0.2, 0.2), "no vertex at all"),
+    ] {
+        assert!(
+            !inside_convex(vertices, q),
+            "the point {q} in the \"polygon\" of {name}: expected outside \
+             (fewer than 3 vertices hold nothing), got inside"
+        );
+    }
     // a repeated vertex is not an edge
     let with_repeat = [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 0.0), p(0.0, 1.0)];
     assert!(

@@ -89,6 +89,25 @@ fn lights_behind_or_along_the_surface_add_nothing() {
     }
 }
 
+/// The exponent p of the highlight need not be a whole number: with
+/// R·V = 1/√2 and p = 2.5 the highlight is ks·(1/√2)^2.5 = 0.4·0.42045.
+#[test]
+fn a_highlight_with_a_fractional_exponent() {
+    let n = v(0.0, 1.0, 0.0);
+    let m = material(0.0, 0.4, 2.5);
+    // L at 45° from the left: R at 45° to the right, 45° from V = N
+    let l = v(-1.0, 1.0, 0.0).normalize();
+    let t = shading_terms(&m, n, n, DVec3::ZERO, &[light(l, 1.0)]);
+    let expected = 0.4 * 0.5f64.sqrt().powf(2.5);
+    assert!(
+        (t.specular - DVec3::splat(expected)).abs().max_element() <= 1e-12,
+        "ks = 0.4, p = 2.5, R·V = 1/√2: expected a specular term of \
+         ks·(R·V)^p = {expected:.6} in every channel (p is not rounded to a \
+         whole number), got {}",
+        vec3(t.specular)
+    );
+}
+
 proptest! {
     #![proptest_config(seeded(256))]
 

@@ -116,6 +116,45 @@ fn a_light_in_the_tangent_plane_is_behind_the_surface() {
     }
 }
 
+/// `normal` is the normal turned toward the viewer; the hit's own normal
+/// may point the other way (a plane whose normal points down, seen from
+/// above; a ball seen from inside). The shadow ray leaves on the viewer's
+/// side, so S follows `normal`, not `hit.normal`.
+#[test]
+fn the_normal_toward_the_viewer_decides() {
+    let w = floor_and_ball();
+    #[rustfmt::skip]
+    let cases = [
+        ("the floor seen from above, its plane's normal pointing down",
+            v(3.0, 0.0, 0.0), v(0.0, -1.0, 0.0), DVec3::Y, v(3.0, 5.0, 0.0), 1.0),
+        ("the top of the ball seen from inside, the light at its centre",
+            v(0.0, 2.5, 0.0), DVec3::Y, v(0.0, -1.0, 0.0), v(0.0, 2.0, 0.0), 1.0),
+        ("the top of the ball seen from inside, the light above it",
+            v(0.0, 2.5, 0.0), DVec3::Y, v(0.0, -1.0, 0.0), v(0.0, 5.0, 0.0), 0.0),
+    ];
+    for (name, point, hit_normal, normal, light_position, expected) in cases {
+        let hit = Hit {
+            t: 1.0,
+            point,
+            normal: hit_normal,
+        };
+        let got = shadow(
+            &w,
+            &hit,
+            normal,
+            &light(light_position),
+            Offset::ScaleAware,
+        );
+        assert!(
+            got == expected,
+            "{name}: point {point}, hit.normal {hit_normal}, normal toward \
+             the viewer {normal}, light {light_position}: expected S = \
+             {expected} (judged on the viewer's side, by `normal`), got S = \
+             {got}"
+        );
+    }
+}
+
 proptest! {
     #![proptest_config(seeded(256))]
 
