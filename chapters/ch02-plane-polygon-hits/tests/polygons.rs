@@ -10,6 +10,16 @@ fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
 }
 
+/// The polygon with these vertices, or a panic that says why there is none.
+fn polygon(vertices: Vec<DVec3>) -> Polygon {
+    Polygon::new(vertices.clone()).unwrap_or_else(|e| {
+        panic!(
+            "Polygon::new({vertices:?}): expected a polygon, got the error \
+             \"{e}\" (it finds its plane with chapter 01's Plane::through)"
+        )
+    })
+}
+
 /// How many of `polygons` the ray hits (closest-hit aside).
 fn hits(polygons: &[Polygon], ray: &Ray) -> usize {
     polygons
@@ -66,26 +76,37 @@ fn closest_hit_table() {
 /// polygon switches to the crossing test and gets the notch right.
 #[test]
 fn concave_polygon_uses_the_crossing_test() {
-    let l = Polygon::new(vec![
+    let l = polygon(vec![
         v(0.0, 0.0, 0.0),
         v(2.0, 0.0, 0.0),
         v(2.0, 1.0, 0.0),
         v(1.0, 1.0, 0.0),
         v(1.0, 2.0, 0.0),
         v(0.0, 2.0, 0.0),
-    ])
-    .unwrap();
-    assert!(!l.is_convex());
+    ]);
+    assert!(!l.is_convex(), "the L-shape: expected not convex");
     let down = |x, y| Ray::new(v(x, y, 1.0), v(0.0, 0.0, -1.0));
-    assert!(l.intersect(&down(0.5, 1.5), Interval::FORWARD).is_some());
-    assert!(l.intersect(&down(1.5, 0.5), Interval::FORWARD).is_some());
-    assert!(
-        l.intersect(&down(1.5, 1.5), Interval::FORWARD).is_none(),
-        "the notch is outside"
-    );
+    for (x, y, expected, where_) in [
+        (0.5, 1.5, true, "in the upper arm"),
+        (1.5, 0.5, true, "in the right arm"),
+        (1.5, 1.5, false, "in the notch"),
+    ] {
+        let hit = l.intersect(&down(x, y), Interval::FORWARD);
+        assert!(
+            hit.is_some() == expected,
+            "a ray straight down at ({x}, {y}) onto the L-shape, {where_}: \
+             expected {}, got {hit:?}",
+            if expected { "a hit" } else { "no hit" }
+        );
+    }
     // The edge test alone is wrong here: the reflex corner's edges cut off
     // part of the L, so a point inside the L fails it.
-    assert!(!ch02::inside_convex(l.outline(), DVec2::new(0.5, 1.5)));
+    assert!(
+        !ch02::inside_convex(l.outline(), DVec2::new(0.5, 1.5)),
+        "inside_convex on the L-shape (not convex) at (0.5, 1.5): expected \
+         outside (the edges at the reflex corner cut off the upper arm), got \
+         inside"
+    );
 }
 
 /// A fan of polygons around a shared centre vertex, all in one plane
@@ -109,16 +130,16 @@ fn fan_shared_edges_and_vertex() {
     // polygons between consecutive rim vertices; two of them merged into a
     // quad, and one given an extra notch vertex (concave quadrilateral)
     let mut fan = Vec::new();
-    fan.push(Polygon::new(vec![centre, rim[0], rim[1], rim[2]]).unwrap()); // quad
-    fan.push(Polygon::new(vec![centre, rim[2], rim[3]]).unwrap());
+    fan.push(polygon(vec![centre, rim[0], rim[1], rim[2]])); // quad
+    fan.push(polygon(vec![centre, rim[2], rim[3]]));
     let notch = centre + 0.8 * (rim[3] + rim[4] - 2.0 * centre) / 2.0 * 0.6;
-    fan.push(Polygon::new(vec![centre, rim[3], notch, rim[4]]).unwrap()); // concave
+    fan.push(polygon(vec![centre, rim[3], notch, rim[4]])); // concave
     // the neighbour of the notch fills it
-    fan.push(Polygon::new(vec![notch, rim[3], rim[4]]).unwrap());
+    fan.push(polygon(vec![notch, rim[3], rim[4]]));
     for i in 4..7 {
-        fan.push(Polygon::new(vec![centre, rim[i], rim[(i + 1) % 7]]).unwrap());
+        fan.push(polygon(vec![centre, rim[i], rim[(i + 1) % 7]]));
     }
-    assert!(!fan[2].is_convex());
+    assert!(!fan[2].is_convex(), "the notched quadrilateral is concave");
 
     // points: the centre, points along every spoke, a grid inside the fan
     let mut targets = vec![centre, notch];
@@ -139,21 +160,36 @@ fn fan_shared_edges_and_vertex() {
     }
     let eye = v(0.4, 0.9, 4.0);
     let (mut rays, mut fall_through, mut twice) = (0, 0, 0);
+    let mut first = None;
     for q in targets {
         for ray in [
             Ray::new(v(q.x, q.y, 2.0), v(0.0, 0.0, -1.0)),
             Ray::new(eye, (q - eye).normalize()),
         ] {
             rays += 1;
-            match hits(&fan, &ray) {
+            let n = hits(&fan, &ray);
+            match n {
                 0 => fall_through += 1,
                 1 => {}
                 _ => twice += 1,
             }
+            if n != 1 {
+                first.get_or_insert(format!(
+                    "the ray from {} through {q} hits {n} polygons",
+                    ray.origin
+                ));
+            }
         }
     }
-    assert_eq!(rays, 2 * (2 + 8 * 49 + 2 * 49 + 41 * 41));
-    assert_eq!((fall_through, twice), (0, 0));
+    assert_eq!(rays, 2 * (2 + 8 * 49 + 2 * 49 + 41 * 41), "rays shot");
+    assert!(
+        (fall_through, twice) == (0, 0),
+        "rays through the fan that fall through a shared edge or vertex, \
+         and rays counted by two polygons: expected 0 and 0 of {rays} (every \
+         ray hits exactly one polygon), got {fall_through} and {twice}; the \
+         first: {}",
+        first.unwrap_or_default()
+    );
 }
 
 /// The same square and the same rays at scales 1e-6 … 1e6, moved away from
@@ -162,15 +198,14 @@ fn fan_shared_edges_and_vertex() {
 #[test]
 fn stable_from_1e_minus_6_to_1e6() {
     let (mut checked, mut failures) = (0, 0);
+    let mut first = None;
     for exponent in -6..=6 {
         let s = 10f64.powi(exponent);
         let o = v(3.0, -3.0, 3.0) * s;
         // a unit square tilted in z, scaled by s and moved to o
         let plane_point = |x: f64, y: f64| o + v(x, y, 0.2 * x + 0.5 * y) * s;
         let corners = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
-        let square =
-            Polygon::new(corners.map(|(x, y)| plane_point(x, y)).to_vec())
-                .unwrap();
+        let square = polygon(corners.map(|(x, y)| plane_point(x, y)).to_vec());
         let eye = o + v(0.3, 0.4, 5.0) * s;
         for (x, y, inside) in [
             (0.5, 0.5, true),
@@ -183,7 +218,8 @@ fn stable_from_1e_minus_6_to_1e6() {
             let ray = Ray::new(eye, (target - eye).normalize());
             checked += 1;
             let expected_t = (target - eye).length();
-            let ok = match square.intersect(&ray, Interval::FORWARD) {
+            let hit = square.intersect(&ray, Interval::FORWARD);
+            let ok = match hit {
                 Some(hit) => {
                     inside && ((hit.t - expected_t) / expected_t).abs() < 1e-9
                 }
@@ -191,11 +227,27 @@ fn stable_from_1e_minus_6_to_1e6() {
             };
             if !ok {
                 failures += 1;
+                first.get_or_insert(format!(
+                    "scale 1e{exponent}, square point ({x}, {y}): expected \
+                     {}, got {:?}",
+                    if inside {
+                        format!("a hit at t = {expected_t}")
+                    } else {
+                        "no hit (just outside)".to_string()
+                    },
+                    hit.map(|h| h.t)
+                ));
             }
         }
     }
-    assert_eq!(checked, 13 * 5);
-    assert_eq!(failures, 0);
+    assert_eq!(checked, 13 * 5, "rays checked: 5 at each of 13 scales");
+    assert!(
+        failures == 0,
+        "rays at a tilted square scaled from 1e-6 to 1e6 that miss it inside, \
+         hit it outside or hit at a wrong t: expected 0 of {checked}, got \
+         {failures}; the first: {}",
+        first.unwrap_or_default()
+    );
 }
 
 /// Two polygons sharing a chain a → m → b whose middle vertex m is placed by
@@ -208,23 +260,17 @@ fn stable_from_1e_minus_6_to_1e6() {
 #[test]
 fn chain_with_an_almost_straight_vertex() {
     let (mut rays, mut fall_through, mut twice) = (0, 0, 0);
+    let mut first = None;
     for i in 0..40 {
         let x0 = 0.1 + 0.0173 * f64::from(i);
         let x1 = 0.9 - 0.0131 * f64::from(i);
         let (a, b) = (v(x0, 0.0, 0.0), v(x1, 1.0, 0.0));
         for k in 1..7 {
             let m = a + (b - a) * (f64::from(k) / 7.0); // rounded: not exactly on a–b
-            let left = Polygon::new(vec![
-                a,
-                m,
-                b,
-                v(-1.0, 1.0, 0.0),
-                v(-1.0, 0.0, 0.0),
-            ])
-            .unwrap();
+            let left =
+                polygon(vec![a, m, b, v(-1.0, 1.0, 0.0), v(-1.0, 0.0, 0.0)]);
             let right =
-                Polygon::new(vec![a, v(2.0, 0.0, 0.0), v(2.0, 1.0, 0.0), b, m])
-                    .unwrap();
+                polygon(vec![a, v(2.0, 0.0, 0.0), v(2.0, 1.0, 0.0), b, m]);
             let pair = [left, right];
             let mut targets = vec![m];
             for j in 1..25 {
@@ -234,17 +280,29 @@ fn chain_with_an_almost_straight_vertex() {
             }
             for q in targets {
                 rays += 1;
-                match hits(
-                    &pair,
-                    &Ray::new(v(q.x, q.y, 1.0), v(0.0, 0.0, -1.0)),
-                ) {
+                let n =
+                    hits(&pair, &Ray::new(v(q.x, q.y, 1.0), v(0.0, 0.0, -1.0)));
+                match n {
                     0 => fall_through += 1,
                     1 => {}
                     _ => twice += 1,
                 }
+                if n != 1 {
+                    first.get_or_insert(format!(
+                        "the ray down through ({}, {}) on the chain {a} → {m} \
+                         → {b} hits {n} polygons",
+                        q.x, q.y
+                    ));
+                }
             }
         }
     }
-    assert_eq!(rays, 40 * 6 * 49);
-    assert_eq!((fall_through, twice), (0, 0));
+    assert_eq!(rays, 40 * 6 * 49, "rays shot");
+    assert!(
+        (fall_through, twice) == (0, 0),
+        "rays along the shared chain that fall through, and rays counted by \
+         both polygons: expected 0 and 0 of {rays}, got {fall_through} and \
+         {twice}; the first: {}",
+        first.unwrap_or_default()
+    );
 }

@@ -7,6 +7,16 @@ fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
 }
 
+/// The plane through three points, or a panic that says why there is none.
+fn plane(p0: DVec3, p1: DVec3, p2: DVec3) -> Plane {
+    Plane::through(p0, p1, p2).unwrap_or_else(|e| {
+        panic!(
+            "chapter 01's Plane::through({p0}, {p1}, {p2}): expected a plane, \
+             got the error \"{e}\""
+        )
+    })
+}
+
 fn describe(r: RayPlane) -> String {
     match r {
         RayPlane::Hit(t) => format!("hit, t = {}", num(t)),
@@ -19,12 +29,8 @@ fn describe(r: RayPlane) -> String {
 /// The lecture's cases on the plane z = 1 and on a tilted plane.
 #[test]
 fn ray_plane_table() {
-    let floor =
-        Plane::through(v(0.0, 0.0, 1.0), v(1.0, 0.0, 1.0), v(0.0, 1.0, 1.0))
-            .unwrap();
-    let tilted =
-        Plane::through(v(1.0, 0.0, 0.0), v(0.0, 1.0, 0.0), v(0.0, 0.0, 1.0))
-            .unwrap();
+    let floor = plane(v(0.0, 0.0, 1.0), v(1.0, 0.0, 1.0), v(0.0, 1.0, 1.0));
+    let tilted = plane(v(1.0, 0.0, 0.0), v(0.0, 1.0, 0.0), v(0.0, 0.0, 1.0));
     let to_10 = Interval::new(0.0, 10.0);
     #[rustfmt::skip]
     let cases = [
@@ -56,16 +62,68 @@ fn ray_plane_table() {
 
 #[test]
 fn intersect_plane_returns_the_point_and_normal() {
-    let floor =
-        Plane::through(v(0.0, 0.0, 1.0), v(1.0, 0.0, 1.0), v(0.0, 1.0, 1.0))
-            .unwrap();
+    let floor = plane(v(0.0, 0.0, 1.0), v(1.0, 0.0, 1.0), v(0.0, 1.0, 1.0));
     let ray = Ray::new(v(1.0, 2.0, 3.0), v(0.0, 0.0, -1.0));
-    let hit = intersect_plane(&floor, &ray, Interval::FORWARD).unwrap();
-    assert_eq!(
-        (hit.t, hit.point, hit.normal),
-        (2.0, v(1.0, 2.0, 1.0), DVec3::Z)
+    let what = "the ray from (1, 2, 3) straight down to the plane z = 1";
+    let hit = intersect_plane(&floor, &ray, Interval::FORWARD);
+    let Some(hit) = hit else {
+        panic!(
+            "{what}: expected a hit at t = 2, got none (ray_plane says {:?})",
+            ray_plane(&floor, &ray, Interval::FORWARD)
+        );
+    };
+    let expected = (2.0, v(1.0, 2.0, 1.0), DVec3::Z);
+    let got = (hit.t, hit.point, hit.normal);
+    assert!(
+        got == expected,
+        "{what}: expected (t, point, normal) = {expected:?}, got {got:?}"
     );
-    assert_eq!(intersect_plane(&floor, &ray, Interval::new(0.0, 1.0)), None);
+    let short = intersect_plane(&floor, &ray, Interval::new(0.0, 1.0));
+    assert!(
+        short.is_none(),
+        "{what}, t only up to 1: expected no hit (the plane is at t = 2), \
+         got {short:?}"
+    );
+}
+
+/// A plane far from the origin (z = 10⁶, d = −10⁶) and rays parallel to
+/// it. N·P₀ + d adds two numbers near 10⁶, so its rounding error is a few
+/// ε·(N.abs()·P₀.abs() + |d|), about ε·2·10⁶, and a ray that close to the
+/// plane lies in it as far as floating point can tell. Judged against
+/// N.abs()·P₀.abs() alone, half as much, it would count as parallel.
+#[test]
+fn rays_along_a_plane_far_from_the_origin() {
+    let far = 1e6;
+    let plane = Plane {
+        normal: DVec3::Z,
+        d: -far,
+    };
+    let eps = f64::EPSILON;
+    #[rustfmt::skip]
+    let cases = [
+        // 12ε·10⁶ = 2.7e-9 above it: within 8ε·(10⁶ + 10⁶) = 3.6e-9
+        ("12ε·|d| above the plane", far + 12.0 * eps * far, RayPlane::InPlane),
+        ("in the plane", far, RayPlane::InPlane),
+        // 100ε·10⁶ = 2.2e-8 above it: far beyond the rounding error
+        ("100ε·|d| above the plane", far + 100.0 * eps * far,
+            RayPlane::Parallel),
+    ];
+    for (case, z, expected) in cases {
+        let origin = v(3.0, -4.0, z);
+        for direction in [v(1.0, 0.0, 0.0), v(0.6, -0.8, 0.0)] {
+            let ray = Ray::new(origin, direction);
+            let got = ray_plane(&plane, &ray, Interval::FORWARD);
+            let distance = plane.eval(origin);
+            assert!(
+                got == expected,
+                "plane z = 1e6 (d = -1e6), ray {case}, from {origin} along \
+                 {direction}: N·P0 + d = {distance:e}, rounding allows \
+                 8ε·(N.abs()·P0.abs() + |d|) = {:e}: expected {expected:?}, \
+                 got {got:?}",
+                8.0 * eps * (z.abs() + far)
+            );
+        }
+    }
 }
 
 fn point() -> impl Strategy<Value = DVec3> {
@@ -86,15 +144,19 @@ proptest! {
         let Ok(plane) = Plane::through(a, b, c) else { return Ok(()) };
         let interval = Interval::new(0.0, t_max);
         let ray = Ray::new(origin, dir);
+        let what = format!("plane N = {}, d = {}, ray from {origin} along {dir}, t in [0, {t_max}]", plane.normal, plane.d);
         match ray_plane(&plane, &ray, interval) {
             result @ (RayPlane::Hit(t) | RayPlane::Outside(t)) => {
                 // a Hit inside the interval, an Outside not; both on the plane
-                prop_assert_eq!(interval.contains(t), matches!(result, RayPlane::Hit(_)));
+                let inside = interval.contains(t);
+                prop_assert!(inside == matches!(result, RayPlane::Hit(_)), "{what}: expected {} (t = {t} is {} the interval), got {result:?}", if inside { "Hit" } else { "Outside" }, if inside { "inside" } else { "outside" });
                 let scale = ray.at(t).abs().max_element().max(1.0);
-                prop_assert!(plane.eval(ray.at(t)).abs() <= 1e-12 * scale);
+                let f = plane.eval(ray.at(t));
+                prop_assert!(f.abs() <= 1e-12 * scale, "{what}: expected the point at t = {t} on the plane (f = 0), got f = {f}");
             }
-            RayPlane::Parallel | RayPlane::InPlane => {
-                prop_assert!(plane.normal.dot(dir).abs() < 1e-12);
+            result @ (RayPlane::Parallel | RayPlane::InPlane) => {
+                let approach = plane.normal.dot(dir);
+                prop_assert!(approach.abs() < 1e-12, "{what}: expected a hit (N·D = {approach} is not 0), got {result:?}");
             }
         }
     }
@@ -129,9 +191,7 @@ fn accurate_dot(a: DVec3, b: DVec3, c: f64) -> f64 {
 /// so any correct order of operations passes.
 #[test]
 fn nearly_parallel_rays() {
-    let plane =
-        Plane::through(v(1.0, 0.2, -0.3), v(-0.4, 1.1, 0.5), v(0.3, -0.7, 1.3))
-            .unwrap();
+    let plane = plane(v(1.0, 0.2, -0.3), v(-0.4, 1.1, 0.5), v(0.3, -0.7, 1.3));
     let n = plane.normal;
     // two unit directions in the plane
     let u = n.any_orthonormal_vector();
@@ -139,6 +199,7 @@ fn nearly_parallel_rays() {
     let base = v(0.3, -0.2, 0.4);
     let on_plane = base - plane.eval(base) * n;
     let (mut checked, mut failures) = (0, 0);
+    let mut first_failure = None;
     for azimuth in 0..8 {
         let phi = f64::from(azimuth) * std::f64::consts::TAU / 8.0;
         let along = phi.cos() * u + phi.sin() * w;
@@ -156,7 +217,14 @@ fn nearly_parallel_rays() {
             match ray_plane(&plane, &ray, Interval::FORWARD) {
                 RayPlane::Hit(t)
                     if ((t - expected) / expected).abs() <= tolerance => {}
-                _ => failures += 1,
+                got => {
+                    failures += 1;
+                    first_failure.get_or_insert(format!(
+                        "a ray at {alpha:e} rad to the plane, from 1 above \
+                         it: expected Hit(t) with t = {expected} (relative \
+                         error at most {tolerance:e}), got {got:?}"
+                    ));
+                }
             }
         }
         // (2) parallel, above the plane: never a hit
@@ -167,7 +235,13 @@ fn nearly_parallel_rays() {
             Interval::FORWARD,
         ) {
             RayPlane::Parallel => {}
-            _ => failures += 1,
+            got => {
+                failures += 1;
+                first_failure.get_or_insert(format!(
+                    "a ray parallel to the plane, 0.5 above it: expected \
+                     Parallel, got {got:?}"
+                ));
+            }
         }
         // (3) inside the plane: InPlane, never a hit at some random t
         checked += 1;
@@ -177,9 +251,20 @@ fn nearly_parallel_rays() {
             Interval::FORWARD,
         ) {
             RayPlane::InPlane => {}
-            _ => failures += 1,
+            got => {
+                failures += 1;
+                first_failure.get_or_insert(format!(
+                    "a ray lying in the plane (built from rounded points): \
+                     expected InPlane, got {got:?}"
+                ));
+            }
         }
     }
-    assert_eq!(checked, 8 * 14);
-    assert_eq!(failures, 0);
+    assert_eq!(checked, 8 * 14, "rays checked: 14 in each of 8 directions");
+    assert!(
+        failures == 0,
+        "nearly parallel, parallel and in-plane rays judged wrong: expected \
+         0 of {checked}, got {failures}; the first: {}",
+        first_failure.unwrap_or_default()
+    );
 }

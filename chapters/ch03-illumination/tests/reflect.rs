@@ -38,8 +38,9 @@ proptest! {
     #[test]
     fn mirror_properties(l in unit_vector(), n in unit_vector()) {
         let r = reflect_light(l, n);
-        prop_assert!((r.length() - 1.0).abs() <= 1e-12);
-        prop_assert!((r.dot(n) - l.dot(n)).abs() <= 1e-12);
-        prop_assert!((r + l).cross(n).length() <= 1e-12);
+        let what = format!("reflect_light(L = {l}, N = {n}) = {r}");
+        prop_assert!((r.length() - 1.0).abs() <= 1e-12, "{what}: expected a unit vector (|L| = 1), got |R| = {}", r.length());
+        prop_assert!((r.dot(n) - l.dot(n)).abs() <= 1e-12, "{what}: expected R·N = L·N = {} (the same angle to N), got {}", l.dot(n), r.dot(n));
+        prop_assert!((r + l).cross(n).length() <= 1e-12, "{what}: expected R + L along N (the part across N flips sign), got R + L = {}", r + l);
     }
 }

@@ -15,6 +15,10 @@ fn spheres(width: u32, height: u32) -> World {
     world
 }
 
+/// Render options for tests: no progress bar, and a pool of `threads`
+/// threads of its own (`Some`), started from the test's thread: a panic in
+/// a row (a `todo!()` in student mode) is then reported with the test that
+/// made it, not with whichever test started rayon's global pool.
 fn quiet(threads: Option<usize>) -> RenderOptions {
     RenderOptions {
         threads,
@@ -24,7 +28,7 @@ fn quiet(threads: Option<usize>) -> RenderOptions {
 
 #[test]
 fn ascii_render() {
-    let image = render(&spheres(64, 36), Terms::All, &quiet(None)).unwrap();
+    let image = render(&spheres(64, 36), Terms::All, &quiet(Some(2))).unwrap();
     insta::assert_snapshot!(image.to_ascii(64));
 }
 
@@ -33,7 +37,7 @@ fn ascii_render() {
 /// mismatch, actual, expected and diff images land in target/image-diffs/.
 #[test]
 fn matches_the_reference_render() {
-    let image = render(&spheres(160, 90), Terms::All, &quiet(None)).unwrap();
+    let image = render(&spheres(160, 90), Terms::All, &quiet(Some(2))).unwrap();
     let expected = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/images/spheres-160x90.png");
     assert_image_matches(&image, &expected, Tolerance::default());
@@ -53,7 +57,16 @@ fn same_image_for_one_and_two_threads() {
             .map(|c| c.to_array().map(f64::to_bits))
             .collect::<Vec<_>>()
     };
-    assert_eq!(bits(&one), bits(&two));
+    let differing = bits(&one)
+        .iter()
+        .zip(&bits(&two))
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(
+        differing == 0,
+        "pixels that differ between one thread and two: expected 0 (every \
+         pixel is computed on its own), got {differing}"
+    );
 }
 
 /// Adding terms never darkens a pixel: ambient ≤ ambient + diffuse ≤ all,
@@ -63,9 +76,22 @@ fn same_image_for_one_and_two_threads() {
 fn terms_add_up() {
     let world = spheres(48, 27);
     let [a, ad, all] = [Terms::Ambient, Terms::AmbientDiffuse, Terms::All]
-        .map(|terms| render(&world, terms, &quiet(None)).unwrap());
-    for ((a, ad), all) in a.pixels().iter().zip(ad.pixels()).zip(all.pixels()) {
-        assert!(a.cmple(*ad).all() && ad.cmple(*all).all(), "{a} {ad} {all}");
+        .map(|terms| render(&world, terms, &quiet(Some(2))).unwrap());
+    for (i, ((a, ad), all)) in a
+        .pixels()
+        .iter()
+        .zip(ad.pixels())
+        .zip(all.pixels())
+        .enumerate()
+    {
+        assert!(
+            a.cmple(*ad).all() && ad.cmple(*all).all(),
+            "pixel ({}, {}): expected ambient ≤ ambient + diffuse ≤ all \
+             terms in every channel (no term is negative), got {a}, {ad} and \
+             {all}",
+            i % 48,
+            i / 48
+        );
     }
     let mut ambient_levels: Vec<[u64; 3]> = a
         .pixels()
@@ -75,6 +101,15 @@ fn terms_add_up() {
     ambient_levels.sort_unstable();
     ambient_levels.dedup();
     // black sky, floor, three spheres
-    assert_eq!(ambient_levels.len(), 5);
-    assert!(a.pixels().contains(&DVec3::ZERO));
+    assert!(
+        ambient_levels.len() == 5,
+        "different colours in the ambient-only image: expected 5 (black sky, \
+         floor, three spheres: ka·Ia is the same all over a material), got \
+         {}",
+        ambient_levels.len()
+    );
+    assert!(
+        a.pixels().contains(&DVec3::ZERO),
+        "the ambient-only image: expected black sky pixels, got none"
+    );
 }

@@ -55,15 +55,19 @@ proptest! {
     ) {
         let sphere = Sphere::new(v(cx, cy, cz), r);
         let origin = sphere.center + (r + away) * dir;
+        let what = |d: DVec3| format!("the sphere at {} of radius {r}, the ray from {origin} along {d}", sphere.center);
         // aimed at the centre
-        let hit = sphere.intersect(&Ray::new(origin, -dir), Interval::FORWARD).unwrap();
-        prop_assert!((hit.t - away).abs() <= 1e-9 * (r + away));
+        let hit = sphere.intersect(&Ray::new(origin, -dir), Interval::FORWARD);
+        prop_assert!(hit.is_some(), "{}, aimed at the centre: expected a hit at t = {away}, got none", what(-dir));
+        let t = hit.unwrap().t;
+        prop_assert!((t - away).abs() <= 1e-9 * (r + away), "{}, aimed at the centre: expected t = |P0 − C| − r = {away}, got t = {t}", what(-dir));
         // any direction
         if let Some(hit) = sphere.intersect(&Ray::new(origin, aim), Interval::FORWARD) {
-            prop_assert!(hit.t >= 0.0);
-            prop_assert!(((hit.point - sphere.center).length() - r).abs() <= 1e-9 * (r + away));
-            prop_assert!((hit.normal.length() - 1.0).abs() <= 1e-9);
-            prop_assert!(hit.normal.dot(hit.point - sphere.center) > 0.0);
+            let from_centre = (hit.point - sphere.center).length();
+            prop_assert!(hit.t >= 0.0, "{}: expected t ≥ 0 (the interval starts at 0), got t = {}", what(aim), hit.t);
+            prop_assert!((from_centre - r).abs() <= 1e-9 * (r + away), "{}: expected the hit point on the sphere, {r} from its centre, got {} at {from_centre}", what(aim), hit.point);
+            prop_assert!((hit.normal.length() - 1.0).abs() <= 1e-9, "{}: expected a unit normal, got {} of length {}", what(aim), hit.normal, hit.normal.length());
+            prop_assert!(hit.normal.dot(hit.point - sphere.center) > 0.0, "{}: expected the normal pointing out of the sphere, got {} at {}", what(aim), hit.normal, hit.point);
         }
     }
 }
@@ -74,6 +78,7 @@ proptest! {
 #[test]
 fn grazing_rays() {
     let (mut checked, mut failures) = (0, 0);
+    let mut first = None;
     for scale in [1e-3, 1.0, 1e3] {
         let sphere = Sphere::new(v(0.3, -0.2, 0.1) * scale, 1.5 * scale);
         for azimuth in 0..8 {
@@ -94,13 +99,26 @@ fn grazing_rays() {
                     checked += 1;
                     if hit.is_some() != should_hit {
                         failures += 1;
+                        first.get_or_insert(format!(
+                            "radius {}, a ray passing the centre at r·(1 \
+                             {} 1e-{k}): expected {}, got {:?}",
+                            sphere.radius,
+                            if should_hit { "−" } else { "+" },
+                            if should_hit { "a hit" } else { "no hit" },
+                            hit.map(|h| h.t)
+                        ));
                     }
                 }
             }
         }
     }
-    assert_eq!(checked, 3 * 8 * 10 * 2);
-    assert_eq!(failures, 0);
+    assert_eq!(checked, 3 * 8 * 10 * 2, "rays checked");
+    assert!(
+        failures == 0,
+        "grazing rays just inside the sphere that miss or just outside that \
+         hit: expected 0 of {checked}, got {failures}; the first: {}",
+        first.unwrap_or_default()
+    );
 }
 
 /// A unit sphere 1e7 from the origin and a 1e-6 sphere 3.7e-5 from it,
@@ -110,6 +128,7 @@ fn grazing_rays() {
 #[test]
 fn far_and_tiny_spheres() {
     let (mut hits, mut failures) = (0, 0);
+    let mut first = None;
     for (center, radius) in
         [(v(1e7, 2e6, -3e6), 1.0), (v(2e-5, -1e-5, 3e-5), 1e-6)]
     {
@@ -126,10 +145,13 @@ fn far_and_tiny_spheres() {
                     Ray::new(DVec3::ZERO, (target - DVec3::ZERO).normalize());
                 if let Some(hit) = sphere.intersect(&ray, Interval::FORWARD) {
                     hits += 1;
-                    if ((hit.point - center).length() - radius).abs()
-                        > 1e-6 * radius
-                    {
+                    let off = (hit.point - center).length() - radius;
+                    if off.abs() > 1e-6 * radius {
                         failures += 1;
+                        first.get_or_insert(format!(
+                            "the sphere of radius {radius} at {center}: a hit \
+                             {off:e} off its surface"
+                        ));
                     }
                 }
             }
@@ -137,6 +159,16 @@ fn far_and_tiny_spheres() {
     }
     // the rays aimed within r of the centre hit: grid points with
     // 0.095·√(i² + j²) < 1, 349 of the 441, for each sphere
-    assert_eq!(hits, 2 * 349);
-    assert_eq!(failures, 0);
+    assert!(
+        hits == 2 * 349,
+        "rays from the origin at a far and a tiny sphere: expected 698 hits \
+         (the 349 of 441 aimed within r of each centre), got {hits}"
+    );
+    assert!(
+        failures == 0,
+        "hits more than 1e-6·r off the far or tiny sphere (the textbook \
+         discriminant b² − a·c cancels there): expected 0 of {hits}, got \
+         {failures}; the first: {}",
+        first.unwrap_or_default()
+    );
 }

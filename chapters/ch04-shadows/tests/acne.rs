@@ -68,7 +68,19 @@ fn acne_and_leaks_table() {
 fn scale_aware_has_no_acne_and_no_leaks() {
     for scale in [1e-3, 1e-2, 0.1, 1.0, 10.0, 100.0, 1e3, 1e4] {
         let e = shadow_errors(&scene(scale), Offset::ScaleAware);
-        assert!(e.pixels > 4000, "scale {scale}: {e:?}");
-        assert_eq!((e.acne, e.leaks), (0, 0), "scale {scale}: {e:?}");
+        assert!(
+            e.pixels > 4000,
+            "the acne scene at scale {scale}: expected more than 4000 \
+             pixels with the light in front of the surface, got {}",
+            e.pixels
+        );
+        assert!(
+            (e.acne, e.leaks) == (0, 0),
+            "the acne scene at scale {scale}, scale-aware offset: expected 0 \
+             pixels with acne and 0 with leaks, got {} and {} (of {})",
+            e.acne,
+            e.leaks,
+            e.pixels
+        );
     }
 }

@@ -196,9 +196,30 @@ fn normal_offset_ray_moves_the_origin_only() {
     let (point, normal, light) =
         (v(1.0, 2.0, 3.0), v(0.0, 0.6, 0.8), v(1.0, 8.0, 11.0));
     let (ray, interval) = normal_offset_ray(point, normal, light, 0.5);
-    assert_eq!(ray.origin, v(1.0, 2.3, 3.4));
-    assert_eq!(ray.origin + ray.direction, light);
-    assert_eq!(interval, Interval::new(0.0, 1.0));
+    let what = "normal_offset_ray(P = (1, 2, 3), N = (0, 0.6, 0.8), light = \
+                (1, 8, 11), ε = 0.5)";
+    let origin = v(1.0, 2.3, 3.4);
+    assert!(
+        ray.origin == origin,
+        "{what}: expected the origin P + ε·N = {origin} (moved off the \
+         surface toward the light's side), got {}",
+        ray.origin
+    );
+    let end = ray.origin + ray.direction;
+    assert!(
+        end == light,
+        "{what}: expected the ray at t = 1, origin + direction, to be the \
+         light {light} (the direction runs from the moved origin to the \
+         light, not normalised), got {end} (direction {})",
+        ray.direction
+    );
+    assert!(
+        interval == Interval::new(0.0, 1.0),
+        "{what}: expected the interval [0, 1] (from the moved origin to the \
+         light), got [{}, {}]",
+        interval.min,
+        interval.max
+    );
 }
 
 /// For each strategy, (re-hits, skips) at each scale.
@@ -220,7 +241,7 @@ fn stability(
     for k in -6..=6 {
         let scale = 10f64.powi(k);
         for (case_index, case) in cases(scale).into_iter().enumerate() {
-            assert_eq!(case.name, names[case_index]);
+            assert_eq!(case.name, names[case_index], "the cases' order");
             let mut rng = Rng(0x5EED_2026);
             let mut counts = vec![(0, 0); strategies.len()];
             let mut n = 0;
@@ -281,6 +302,26 @@ fn re_hits_and_skips_over_scales() {
         let skips: Vec<usize> = column.iter().map(|c| c.1).collect();
         (re_hits, skips)
     };
+    // the counts of a case and strategy, against what the reference
+    // counts (see above), with what differs said in words
+    let expect =
+        |case: usize, strategy: usize, expected: (Vec<usize>, Vec<usize>)| {
+            let got = counts(case, strategy);
+            let name =
+                |s: usize| ["TMin(1e-4)", "AlongNormal(1e-9)", "ScaleAware"][s];
+            for (what, got, expected) in [
+                ("re-hits of the surface (acne)", &got.0, &expected.0),
+                ("skipped blockers (leaks)", &got.1, &expected.1),
+            ] {
+                assert!(
+                    got == expected,
+                    "{} with {}, {what} out of 1000 rays at scales 1e-6 … 1e6: \
+                 expected {expected:?}, got {got:?}",
+                    results[case].0,
+                    name(strategy)
+                );
+            }
+        };
     let zeros = vec![0; 13];
     let (sphere, plane, floor) = (0, 1, 2);
     let (t_min, along_normal, scale_aware) = (0, 1, 2);
@@ -298,18 +339,9 @@ fn re_hits_and_skips_over_scales() {
         skips.extend([0; 7]);
         skips
     };
-    assert_eq!(
-        counts(sphere, t_min),
-        (zeros.clone(), t_min_skips(1000, 977, 688))
-    );
-    assert_eq!(
-        counts(plane, t_min),
-        (zeros.clone(), t_min_skips(994, 972, 707))
-    );
-    assert_eq!(
-        counts(floor, t_min),
-        (zeros.clone(), t_min_skips(995, 967, 706))
-    );
+    expect(sphere, t_min, (zeros.clone(), t_min_skips(1000, 977, 688)));
+    expect(plane, t_min, (zeros.clone(), t_min_skips(994, 972, 707)));
+    expect(floor, t_min, (zeros.clone(), t_min_skips(995, 967, 706)));
 
     // AlongNormal(1e-9), a fixed distance: at 1e-6 the blocker is only
     // 3e-10 away and the origin is lifted past it: all 1000 rays skip it
@@ -323,22 +355,20 @@ fn re_hits_and_skips_over_scales() {
     acne_at_1e6[12] = 50;
     let mut leaks_at_1e_6 = zeros.clone();
     leaks_at_1e_6[0] = 1000;
-    assert_eq!(
-        counts(sphere, along_normal),
-        (acne_at_1e6.clone(), leaks_at_1e_6.clone())
+    expect(
+        sphere,
+        along_normal,
+        (acne_at_1e6.clone(), leaks_at_1e_6.clone()),
     );
     acne_at_1e6[12] = 2;
-    assert_eq!(
-        counts(plane, along_normal),
-        (acne_at_1e6, leaks_at_1e_6.clone())
-    );
-    assert_eq!(counts(floor, along_normal), (zeros.clone(), leaks_at_1e_6));
+    expect(plane, along_normal, (acne_at_1e6, leaks_at_1e_6.clone()));
+    expect(floor, along_normal, (zeros.clone(), leaks_at_1e_6));
 
     // ScaleAware: 256 ulps of each coordinate cover the error at every
     // scale, and 5.7e-14 of the coordinates never reaches the blocker
     // (3e-4 of the scene away): no re-hits, no skips.
-    assert_eq!(counts(sphere, scale_aware), (zeros.clone(), zeros.clone()));
-    assert_eq!(counts(plane, scale_aware), (zeros.clone(), zeros.clone()));
+    expect(sphere, scale_aware, (zeros.clone(), zeros.clone()));
+    expect(plane, scale_aware, (zeros.clone(), zeros.clone()));
 
     // ...except on a plane through the origin seen from far away (see
     // src/scale_aware.rs): a floor point's y is near 0, so it moves only
@@ -349,5 +379,5 @@ fn re_hits_and_skips_over_scales() {
     // not 0 from 1e3 on, while at 1 and below the error is under 2.8e-14.
     let mut floor_acne = zeros.clone();
     floor_acne[9..].copy_from_slice(&[34, 97, 0, 17]);
-    assert_eq!(counts(floor, scale_aware), (floor_acne, zeros));
+    expect(floor, scale_aware, (floor_acne, zeros));
 }

@@ -89,6 +89,72 @@ fn shadow_table() {
     insta::assert_snapshot!(table.to_string());
 }
 
+/// A light exactly in the tangent plane of the point (N·(light − P) = 0)
+/// counts as behind it: S = 0, like the floor's "light in the surface's
+/// plane" above. The floor would also block its own shadow ray; the ball,
+/// curving away below the tangent plane, does not, so only the rule
+/// "N·L ≤ 0: the surface blocks it" gives 0 here.
+#[test]
+fn a_light_in_the_tangent_plane_is_behind_the_surface() {
+    let w = floor_and_ball();
+    #[rustfmt::skip]
+    let cases = [
+        ("side of the ball, light straight above it",
+            v(0.5, 2.0, 0.0), DVec3::X, v(0.5, 5.0, 0.0)),
+        ("top of the ball, light level with it",
+            v(0.0, 2.5, 0.0), DVec3::Y, v(4.0, 2.5, -3.0)),
+    ];
+    for (name, point, normal, light) in cases {
+        let got = si(&w, point, normal, light);
+        assert!(
+            got == 0.0,
+            "{name}: point {point}, normal {normal}, light {light}, N·(light \
+             − point) = {}: expected S = 0 (a light in the surface's tangent \
+             plane is not in front of it: N·L ≤ 0), got S = {got}",
+            normal.dot(light - point)
+        );
+    }
+}
+
+/// `normal` is the normal turned toward the viewer; the hit's own normal
+/// may point the other way (a plane whose normal points down, seen from
+/// above; a ball seen from inside). The shadow ray leaves on the viewer's
+/// side, so S follows `normal`, not `hit.normal`.
+#[test]
+fn the_normal_toward_the_viewer_decides() {
+    let w = floor_and_ball();
+    #[rustfmt::skip]
+    let cases = [
+        ("the floor seen from above, its plane's normal pointing down",
+            v(3.0, 0.0, 0.0), v(0.0, -1.0, 0.0), DVec3::Y, v(3.0, 5.0, 0.0), 1.0),
+        ("the top of the ball seen from inside, the light at its centre",
+            v(0.0, 2.5, 0.0), DVec3::Y, v(0.0, -1.0, 0.0), v(0.0, 2.0, 0.0), 1.0),
+        ("the top of the ball seen from inside, the light above it",
+            v(0.0, 2.5, 0.0), DVec3::Y, v(0.0, -1.0, 0.0), v(0.0, 5.0, 0.0), 0.0),
+    ];
+    for (name, point, hit_normal, normal, light_position, expected) in cases {
+        let hit = Hit {
+            t: 1.0,
+            point,
+            normal: hit_normal,
+        };
+        let got = shadow(
+            &w,
+            &hit,
+            normal,
+            &light(light_position),
+            Offset::ScaleAware,
+        );
+        assert!(
+            got == expected,
+            "{name}: point {point}, hit.normal {hit_normal}, normal toward \
+             the viewer {normal}, light {light_position}: expected S = \
+             {expected} (judged on the viewer's side, by `normal`), got S = \
+             {got}"
+        );
+    }
+}
+
 proptest! {
     #![proptest_config(seeded(256))]
 
@@ -109,8 +175,11 @@ proptest! {
         let radius = size * (light - point).length() * along.min(1.0 - along);
         let radius = radius.min(size * center.y);
         let blocked = world(vec![floor.clone(), Shape::Sphere { center, radius }]);
-        prop_assert_eq!(si(&blocked, point, DVec3::Y, light), 0.0);
-        prop_assert_eq!(si(&world(vec![floor]), point, DVec3::Y, light), 1.0);
+        let what = format!("the floor point {point}, the light {light}");
+        let s_blocked = si(&blocked, point, DVec3::Y, light);
+        prop_assert!(s_blocked == 0.0, "{what}, a ball of radius {radius} at {center} between them: expected S = 0 (in its shadow), got S = {s_blocked}");
+        let s_open = si(&world(vec![floor]), point, DVec3::Y, light);
+        prop_assert!(s_open == 1.0, "{what}, nothing between them: expected S = 1 (lit), got S = {s_open}");
     }
 }
 
@@ -147,7 +216,17 @@ fn renders_are_the_same_for_any_number_of_threads() {
     let w = two_lights(48, 27);
     let one = render(&w, Offset::ScaleAware, &options(1)).unwrap();
     let two = render(&w, Offset::ScaleAware, &options(2)).unwrap();
-    assert_eq!(one.pixels(), two.pixels());
+    let differing = one
+        .pixels()
+        .iter()
+        .zip(two.pixels())
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(
+        differing == 0,
+        "pixels that differ between one thread and two: expected 0 (every \
+         pixel is computed on its own), got {differing}"
+    );
 }
 
 /// The render against its reference image (tests/images/two-lights.png),

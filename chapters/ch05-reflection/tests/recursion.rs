@@ -3,7 +3,8 @@
 use ch04::{Offset, offset_scale_aware};
 use ch05::{
     Cut, DEFAULT_STOP, DVec3, Interval, LoggedRay, Ray, RayCounts,
-    SAFETY_DEPTH, Stop, World, pixel_tree, ray_tree, render, trace_counted,
+    SAFETY_DEPTH, Stop, World, pixel_tree, ray_tree, reflect_ray, render,
+    trace_counted,
 };
 use raystep_check::{Table, num, vec3};
 
@@ -26,6 +27,32 @@ fn primary_rays(world: &World) -> impl Iterator<Item = (u32, u32, Ray)> + '_ {
 /// The largest channel difference of two colours.
 fn distance(a: DVec3, b: DVec3) -> f64 {
     (a - b).abs().max_element()
+}
+
+/// A colour to 6 decimals, for messages: `(0.168590, 0.258590, 0.438590)`.
+fn rgb(c: DVec3) -> String {
+    format!("({:.6}, {:.6}, {:.6})", c.x, c.y, c.z)
+}
+
+/// The counts that differ, by name: `reflected rays expected 3, got 0;
+/// shadow rays expected 4, got 1`.
+fn count_differences(got: &RayCounts, expected: &RayCounts) -> String {
+    let fields = |c: &RayCounts| {
+        [
+            ("primary rays", c.primary),
+            ("reflected rays", c.secondary),
+            ("shadow rays", c.shadow),
+            ("rays cut by depth", c.cut_by_depth),
+            ("rays cut by contribution", c.cut_by_contribution),
+        ]
+    };
+    fields(expected)
+        .iter()
+        .zip(fields(got))
+        .filter(|((_, e), (_, g))| e != g)
+        .map(|((name, e), (_, g))| format!("{name} expected {e}, got {g}"))
+        .collect::<Vec<_>>()
+        .join("; ")
 }
 
 /// One mirror: a mirror floor (kr coloured, so each channel is scaled on
@@ -76,7 +103,10 @@ fn mirror_floor() -> World {
 /// hits a mirror is counted as cut by depth.
 #[test]
 fn depth_zero_is_the_chapter_04_colour() {
-    for world in [mirror_floor(), chapter_scene("mirrors", 48, 27)] {
+    for (name, world) in [
+        ("the mirror floor", mirror_floor()),
+        ("scenes/mirrors.toml", chapter_scene("mirrors", 48, 27)),
+    ] {
         let mut on_mirrors = 0;
         let mut total = RayCounts::default();
         for (column, row, ray) in primary_rays(&world) {
@@ -84,7 +114,12 @@ fn depth_zero_is_the_chapter_04_colour() {
             let local = ch04::trace(&world, &ray, Offset::ScaleAware);
             assert!(
                 distance(colour, local) <= 1e-12,
-                "pixel ({column}, {row}): depth 0 gives {colour}, chapter 04 {local}"
+                "{name}, pixel ({column}, {row}), depth ≤ 0: expected chapter \
+                 04's colour {} (the local model with shadows, no reflected \
+                 ray), got {} (off by {:.1e})",
+                rgb(local),
+                rgb(colour),
+                distance(colour, local)
             );
             total += counts;
             if let Some((object, _)) =
@@ -94,22 +129,41 @@ fn depth_zero_is_the_chapter_04_colour() {
                     u64::from(world.material_of(object).kr != DVec3::ZERO);
             }
         }
-        assert_eq!(total.primary, u64::from(world.width * world.height));
-        assert_eq!(total.secondary, 0);
-        assert_eq!(total.cut_by_depth, on_mirrors);
-        assert!(on_mirrors > 0);
+        let pixels = u64::from(world.width * world.height);
+        assert!(
+            total.primary == pixels,
+            "{name}, depth ≤ 0: primary rays: expected {pixels} (one per \
+             pixel), got {}",
+            total.primary
+        );
+        assert!(
+            total.secondary == 0,
+            "{name}, depth ≤ 0: reflected rays: expected 0 (depth 0 allows \
+             none), got {}",
+            total.secondary
+        );
+        assert!(on_mirrors > 0, "{name}: the test sees no mirror");
+        assert!(
+            total.cut_by_depth == on_mirrors,
+            "{name}, depth ≤ 0: rays cut by the depth rule: expected \
+             {on_mirrors} (one for every primary ray that hits a mirror: \
+             its reflected ray would be at depth 1), got {}",
+            total.cut_by_depth
+        );
     }
 }
 
 /// Depth 1 adds kr·Lr where a primary ray hits the mirror, Lr being what
 /// the reflected ray sees by chapter 04's local model. The reflected ray is
-/// built here on its own: from the hit moved off the surface on the side
-/// the ray came from, along D − 2(D·N)N.
+/// built here from exercise 1's `reflect_ray` (judged by
+/// `tests/reflection.rs`), starting off the surface on the side the ray
+/// came from.
 #[test]
 fn depth_one_adds_kr_times_what_the_reflected_ray_sees() {
     let world = mirror_floor();
     let (mut mirror_pixels, mut ball_in_mirror) = (0, 0);
     for (column, row, ray) in primary_rays(&world) {
+        let pixel = format!("the mirror floor, pixel ({column}, {row})");
         let (colour, counts) = trace_counted(&world, &ray, &Stop::depth(1));
         let local = ch04::trace(&world, &ray, Offset::ScaleAware);
         let mut expected = local;
@@ -117,35 +171,56 @@ fn depth_one_adds_kr_times_what_the_reflected_ray_sees() {
         {
             let kr = world.material_of(object).kr;
             if kr != DVec3::ZERO {
-                let n = hit.facing(ray.direction);
-                let d = ray.direction;
+                let facing = hit.facing(ray.direction);
                 let reflected = Ray::new(
-                    offset_scale_aware(hit.point, n),
-                    d - 2.0 * d.dot(n) * n,
+                    offset_scale_aware(hit.point, facing),
+                    reflect_ray(ray.direction, facing),
                 );
-                expected +=
-                    kr * ch04::trace(&world, &reflected, Offset::ScaleAware);
+                let seen = ch04::trace(&world, &reflected, Offset::ScaleAware);
+                expected += kr * seen;
                 mirror_pixels += 1;
                 ball_in_mirror += usize::from(
                     world.closest_hit(&reflected, Interval::FORWARD).is_some(),
                 );
-                assert_eq!(counts.secondary, 1, "pixel ({column}, {row})");
+                assert!(
+                    counts.secondary == 1,
+                    "{pixel}, on the mirror, depth ≤ 1: reflected rays: \
+                     expected 1, got {}",
+                    counts.secondary
+                );
             }
         }
         assert!(
             distance(colour, expected) <= 1e-12,
-            "pixel ({column}, {row}): depth 1 gives {colour}, local + kr·Lr is {expected}"
+            "{pixel}, depth ≤ 1: expected the local colour {} plus kr·Lr, {} \
+             in all (Lr: what the reflected ray sees), got {} (off by {:.1e})",
+            rgb(local),
+            rgb(expected),
+            rgb(colour),
+            distance(colour, expected)
         );
         // Nothing the floor shows is a mirror: no ray was cut.
-        assert_eq!(counts.cut_by_depth, 0, "pixel ({column}, {row})");
+        assert!(
+            counts.cut_by_depth == 0,
+            "{pixel}, depth ≤ 1: rays cut by the depth rule: expected 0 (the \
+             ball and the sky the floor reflects are no mirrors), got {}",
+            counts.cut_by_depth
+        );
         // So depth 2 changes nothing.
         let (deeper, _) = trace_counted(&world, &ray, &Stop::depth(2));
-        assert!(distance(deeper, colour) <= 1e-12, "pixel ({column}, {row})");
+        assert!(
+            distance(deeper, colour) <= 1e-12,
+            "{pixel}: expected the same colour at depth ≤ 2 as at depth ≤ 1, \
+             {} (nothing deeper to see), got {}",
+            rgb(colour),
+            rgb(deeper)
+        );
     }
     // the test saw the mirror, and the ball in it
     assert!(
         mirror_pixels > 100 && ball_in_mirror > 20,
-        "{mirror_pixels} {ball_in_mirror}"
+        "the test sees {mirror_pixels} mirror pixels and the ball in \
+         {ball_in_mirror} of them"
     );
 }
 
@@ -190,15 +265,39 @@ fn depth_rule_counts() {
             .collect();
         for (depth, c) in counts.iter().enumerate() {
             counts_row(&mut table, format!("{name}, depth ≤ {depth}"), c);
-            assert_eq!(c.primary, 48 * 27);
-            assert_eq!(c.cut_by_contribution, 0);
-        }
-        for pair in counts.windows(2) {
-            assert_eq!(
-                pair[1].secondary,
-                pair[0].secondary + pair[0].cut_by_depth
+            assert!(
+                c.primary == 48 * 27,
+                "{name}, depth ≤ {depth}: primary rays: expected 1296 (one \
+                 per pixel of 48×27), got {}",
+                c.primary
             );
-            assert!(pair[1].cut_by_depth <= pair[0].cut_by_depth);
+            assert!(
+                c.cut_by_contribution == 0,
+                "{name}, depth ≤ {depth}: rays cut by contribution: expected \
+                 0 (only the depth rule is on), got {}",
+                c.cut_by_contribution
+            );
+        }
+        for (depth, pair) in counts.windows(2).enumerate() {
+            assert!(
+                pair[1].secondary == pair[0].secondary + pair[0].cut_by_depth,
+                "{name}: reflected rays at depth ≤ {}: expected {} + {} = {} \
+                 (those at depth ≤ {depth}, and the ones depth ≤ {depth} \
+                 cut), got {}",
+                depth + 1,
+                pair[0].secondary,
+                pair[0].cut_by_depth,
+                pair[0].secondary + pair[0].cut_by_depth,
+                pair[1].secondary
+            );
+            assert!(
+                pair[1].cut_by_depth <= pair[0].cut_by_depth,
+                "{name}: rays cut by depth: expected at most {} at depth ≤ \
+                 {} (as many as at depth ≤ {depth} or fewer), got {}",
+                pair[0].cut_by_depth,
+                depth + 1,
+                pair[1].cut_by_depth
+            );
         }
     }
     insta::assert_snapshot!(table.to_string());
@@ -230,12 +329,30 @@ fn contribution_rule_counts() {
                 format!("{name}, contribution ≥ {threshold:e}"),
                 &c,
             );
-            assert_eq!(c.primary, 48 * 27);
+            let rule = format!("{name}, contribution ≥ {threshold:e}");
+            assert!(
+                c.primary == 48 * 27,
+                "{rule}: primary rays: expected 1296 (one per pixel of \
+                 48×27), got {}",
+                c.primary
+            );
             if best_kr.powi(SAFETY_DEPTH as i32) < threshold {
-                assert_eq!(c.cut_by_depth, 0, "{name} {threshold}");
+                assert!(
+                    c.cut_by_depth == 0,
+                    "{rule}: rays cut by the safety depth: expected 0 (no ray \
+                     at depth {SAFETY_DEPTH} still weighs {threshold:e}), \
+                     got {}",
+                    c.cut_by_depth
+                );
             }
             if let Some(p) = previous {
-                assert!(c.secondary >= p.secondary);
+                assert!(
+                    c.secondary >= p.secondary,
+                    "{rule}: reflected rays: expected at least {} (a lower \
+                     threshold lets at least as many through), got {}",
+                    p.secondary,
+                    c.secondary
+                );
             }
             previous = Some(c);
         }
@@ -280,8 +397,10 @@ material = "mirror"
 const BETWEEN: Ray = Ray::new(DVec3::ZERO, DVec3::X);
 
 /// Every hit of the ray is lit (the light is above, in front of both
-/// mirrors), so each hit shoots one shadow ray.
+/// mirrors), so each hit shoots one shadow ray. `what` says which mirrors
+/// and which rule, for the message.
 fn assert_one_chain(
+    what: &str,
     c: &RayCounts,
     reflected: u64,
     cut_by_depth: u64,
@@ -294,7 +413,18 @@ fn assert_one_chain(
         cut_by_depth,
         cut_by_contribution,
     };
-    assert_eq!(*c, expected);
+    assert!(
+        *c == expected,
+        "the ray between {what}: expected {reflected} reflected rays, {} \
+         shadow rays (one per hit) and the next reflected ray cut by {}: {}",
+        reflected + 1,
+        if cut_by_depth == 1 {
+            "depth"
+        } else {
+            "contribution"
+        },
+        count_differences(c, &expected)
+    );
 }
 
 /// The smallest n with kⁿ < threshold, the weight multiplied up one
@@ -320,14 +450,20 @@ fn facing_mirrors_terminate() {
         for max_depth in [0, 1, 2, 7, 20] {
             let (_, c) =
                 trace_counted(&world, &BETWEEN, &Stop::depth(max_depth));
-            assert_one_chain(&c, u64::from(max_depth), 1, 0);
+            let what =
+                format!("facing mirrors of kr {kr}, depth ≤ {max_depth}");
+            assert_one_chain(&what, &c, u64::from(max_depth), 1, 0);
         }
     }
     let perfect = facing_mirrors("1");
     for threshold in [1e-1, 1e-3] {
         let (_, c) =
             trace_counted(&perfect, &BETWEEN, &Stop::contribution(threshold));
-        assert_one_chain(&c, u64::from(SAFETY_DEPTH), 1, 0);
+        let what = format!(
+            "perfect facing mirrors (kr 1), contribution ≥ {threshold} (the \
+             weight stays 1: the safety depth {SAFETY_DEPTH} ends it)"
+        );
+        assert_one_chain(&what, &c, u64::from(SAFETY_DEPTH), 1, 0);
     }
     let tarnished = facing_mirrors("0.85");
     let mut shot = Vec::new();
@@ -336,11 +472,15 @@ fn facing_mirrors_terminate() {
         let (_, c) =
             trace_counted(&tarnished, &BETWEEN, &Stop::contribution(threshold));
         // rays 1..n−1 are shot, ray n is cut
-        assert_one_chain(&c, n - 1, 0, 1);
+        let what = format!(
+            "facing mirrors of kr 0.85, contribution ≥ {threshold} (ray {n} \
+             is the first to weigh less, 0.85^{n})"
+        );
+        assert_one_chain(&what, &c, n - 1, 0, 1);
         shot.push(c.secondary);
     }
     // ln(threshold)/ln(0.85) rounded up, less one
-    assert_eq!(shot, [14, 28, 42, 56]);
+    assert_eq!(shot, [14, 28, 42, 56], "reflected rays per threshold");
 }
 
 /// A cut by contribution happens exactly when the weight's largest channel
@@ -364,19 +504,33 @@ fn contribution_cut_by_hand() {
         let world = facing_mirrors(kr);
         let stop = Stop::contribution(threshold);
         let (_, counts) = trace_counted(&world, &BETWEEN, &stop);
-        assert_one_chain(&counts, reflected, 0, 1);
+        let what =
+            format!("facing mirrors of kr {kr}, contribution ≥ {threshold}");
+        assert_one_chain(&what, &counts, reflected, 0, 1);
         let cut: Vec<LoggedRay> = ray_tree(&world, &BETWEEN, &stop)
             .into_iter()
             .filter(|r| r.cut.is_some())
             .collect();
         let expected_weight = 0.5f64.powi(reflected as i32 + 1);
-        assert_eq!(cut.len(), 1);
-        assert_eq!(
-            cut[0].path.depth,
-            reflected as u32 + 1,
-            "kr {kr}, threshold {threshold}"
+        assert!(
+            cut.len() == 1,
+            "the ray between {what}: rays cut: expected 1, got {}",
+            cut.len()
         );
-        assert!((cut[0].path.contribution() - expected_weight).abs() < 1e-15);
+        assert!(
+            cut[0].path.depth == reflected as u32 + 1,
+            "the ray between {what}: the depth of the cut ray: expected {}, \
+             got {}",
+            reflected + 1,
+            cut[0].path.depth
+        );
+        assert!(
+            (cut[0].path.contribution() - expected_weight).abs() < 1e-15,
+            "the ray between {what}: the contribution of the cut ray: \
+             expected {expected_weight} (0.5^{}), got {}",
+            reflected + 1,
+            cut[0].path.contribution()
+        );
     }
 }
 
@@ -394,20 +548,35 @@ fn facing_mirrors_colour_by_hand() {
     let half = facing_mirrors("0.5");
     for m in [0, 1, 2, 5, 10] {
         let (colour, _) = trace_counted(&half, &BETWEEN, &Stop::depth(m));
+        let expected = series(0.5, m);
         assert!(
-            distance(colour, DVec3::splat(series(0.5, m))) < 1e-12,
-            "depth {m}: {colour}"
+            distance(colour, DVec3::splat(expected)) < 1e-12,
+            "the ray between facing mirrors of kr 0.5, depth ≤ {m}: expected \
+             {expected:.6} in every channel (L·(1 + kr + … + kr^{m}), L = \
+             {local:.6} the local colour of every hit), got {}",
+            rgb(colour)
         );
     }
     // kr = 0.5 and threshold 0.1: depths 0..=3 as worked above
     let (colour, _) = trace_counted(&half, &BETWEEN, &Stop::contribution(0.1));
-    assert!(distance(colour, DVec3::splat(series(0.5, 3))) < 1e-12);
+    let expected = series(0.5, 3);
+    assert!(
+        distance(colour, DVec3::splat(expected)) < 1e-12,
+        "the ray between facing mirrors of kr 0.5, contribution ≥ 0.1: \
+         expected {expected:.6} in every channel (depths 0 to 3: the 4th ray \
+         weighs 0.0625 < 0.1), got {}",
+        rgb(colour)
+    );
     // perfect mirrors to the safety depth: 65 equal terms
     let (colour, _) =
         trace_counted(&facing_mirrors("1"), &BETWEEN, &DEFAULT_STOP);
     assert!(
         distance(colour, DVec3::splat(65.0 * local)) < 1e-12,
-        "{colour}"
+        "the ray between perfect facing mirrors (kr 1), the default rule: \
+         expected {:.6} in every channel (65 equal terms L, down to the \
+         safety depth {SAFETY_DEPTH}), got {}",
+        65.0 * local,
+        rgb(colour)
     );
     // each channel is scaled by its own kr
     let (colour, _) = trace_counted(
@@ -416,7 +585,13 @@ fn facing_mirrors_colour_by_hand() {
         &Stop::depth(3),
     );
     let expected = DVec3::new(series(0.5, 3), series(0.25, 3), local);
-    assert!(distance(colour, expected) < 1e-12, "{colour} {expected}");
+    assert!(
+        distance(colour, expected) < 1e-12,
+        "the ray between facing mirrors of kr (0.5, 0.25, 0), depth ≤ 3: \
+         expected {} (each channel scaled by its own kr), got {}",
+        rgb(expected),
+        rgb(colour)
+    );
 }
 
 /// The ray trees of two pixels of the mirrors scene (160×90) that hit the
@@ -519,19 +694,25 @@ fn no_weight_exceeds_one() {
             .iter()
             .map(|m| m.kr.max_element())
             .fold(0.0, f64::max);
-        assert!(best < 1.0);
+        assert!(best < 1.0, "{name}: the best mirror's kr is {best}");
         let mut deepest = 0;
         for (column, row, _) in primary_rays(&world) {
             for r in pixel_tree(&world, column, row, &DEFAULT_STOP) {
                 let w = r.path.weight;
                 assert!(
                     w.min_element() >= 0.0 && w.max_element() <= 1.0,
-                    "{name} {w}"
+                    "{name}, pixel ({column}, {row}), a ray at depth {}: \
+                     expected a weight between 0 and 1 in every channel, got \
+                     {w}",
+                    r.path.depth
                 );
                 let bound = best.powi(r.path.depth as i32) * (1.0 + 1e-12);
                 assert!(
                     w.max_element() <= bound,
-                    "{name}: depth {} weight {w}",
+                    "{name}, pixel ({column}, {row}), a ray at depth {}: \
+                     expected a weight of at most {best}^{} = {bound}, got \
+                     {w}",
+                    r.path.depth,
                     r.path.depth
                 );
                 deepest = deepest.max(r.path.depth);
@@ -570,19 +751,33 @@ fn each_level_adds_at_most_its_cut_ray_in(world: &World) {
             let tree =
                 pixel_tree(world, column, row, &Stop::depth(depth as u32));
             let cut: Vec<_> = tree.iter().filter(|r| r.cut.is_some()).collect();
-            assert!(cut.len() <= 1);
+            assert!(
+                cut.len() <= 1,
+                "pixel ({column}, {row}), depth ≤ {depth}: rays cut: expected \
+                 at most 1 (a pixel's tree is a chain here), got {}",
+                cut.len()
+            );
             let bound = cut
                 .first()
                 .map_or(DVec3::ZERO, |r| r.path.weight * brightest);
             assert!(
                 a.cmple(b).all() && (b - a).cmple(bound + 1e-12).all(),
-                "pixel ({column}, {row}), depth {depth} → {}: {a} → {b}, at most {bound}",
-                depth + 1
+                "pixel ({column}, {row}), from depth ≤ {depth} to depth ≤ {}: \
+                 expected the colour {} to grow by at most {} (what the one \
+                 cut ray can bring), got {}",
+                depth + 1,
+                rgb(a),
+                rgb(bound),
+                rgb(b)
             );
             brighter += usize::from(a != b);
         }
     }
-    assert!(brighter > 100, "only {brighter} pixels changed");
+    assert!(
+        brighter > 100,
+        "pixels that change when one level deeper is allowed: expected more \
+         than 100, got {brighter}"
+    );
 }
 
 /// The reflected ray leaves from the side the ray came from: it never
@@ -609,7 +804,7 @@ fn reflected_rays_never_hit_their_own_surface() {
             for r in tree.iter().filter(|r| !r.shadow) {
                 if !r.is_primary() && r.cut.is_none() {
                     let (_, source) = object_hit(parent.unwrap())
-                        .expect("the parent hit a mirror");
+                        .expect("the parent of a reflected ray hits a mirror");
                     checked += 1;
                     if let Some((t, object)) = object_hit(r) {
                         self_hits += usize::from(object == source);
@@ -619,11 +814,17 @@ fn reflected_rays_never_hit_their_own_surface() {
                 parent = Some(r);
             }
         }
-        assert!(checked > 200, "{name}: only {checked} reflected rays");
-        assert_eq!(
-            (self_hits, too_close),
-            (0, 0),
-            "{name}: of {checked} reflected rays"
+        assert!(
+            checked > 200,
+            "{name}: reflected rays checked: expected more than 200, got \
+             {checked}"
+        );
+        assert!(
+            (self_hits, too_close) == (0, 0),
+            "{name}: reflected rays that hit the surface they start on, and \
+             that hit something closer than t = 1e-9: expected 0 and 0 of \
+             {checked} (start off the surface, on the side the ray came \
+             from), got {self_hits} and {too_close}"
         );
     }
 }

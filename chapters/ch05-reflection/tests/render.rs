@@ -46,9 +46,25 @@ fn same_image_and_counts_for_one_and_two_threads() {
             .map(|c| c.to_array().map(f64::to_bits))
             .collect::<Vec<_>>()
     };
-    assert_eq!(bits(&one), bits(&two));
-    assert_eq!(one_counts, two_counts);
-    assert!(one_counts.secondary > 0);
+    let differing = bits(&one)
+        .iter()
+        .zip(&bits(&two))
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(
+        differing == 0,
+        "pixels that differ between one thread and two: expected 0 (every \
+         pixel is traced on its own), got {differing}"
+    );
+    assert!(
+        one_counts == two_counts,
+        "ray counts: expected the same on one thread and on two, got \
+         {one_counts:?} and {two_counts:?}"
+    );
+    assert!(
+        one_counts.secondary > 0,
+        "reflected rays in the mirrors scene: expected some, got none"
+    );
 }
 
 /// The render's counts are the sum of its pixels' ray trees: every ray a
@@ -74,5 +90,9 @@ fn counts_are_the_pixels_trees_added_up() {
             }
         }
     }
-    assert_eq!(summed, counts);
+    assert!(
+        summed == counts,
+        "the render's ray counts: expected the sum of its pixels' ray trees, \
+         {summed:?}, got {counts:?}"
+    );
 }

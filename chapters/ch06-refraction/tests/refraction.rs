@@ -33,7 +33,7 @@ fn cell(t: Option<DVec3>) -> String {
 fn refraction_table() {
     let mut header =
         vec!["material".to_string(), "n".to_string(), "way".to_string()];
-    header.extend(INCIDENCE_DEGREES.iter().map(|d| format!("θ={d}°")));
+    header.extend(INCIDENCE_DEGREES.iter().map(|d| format!("φ at θ={d}°")));
     let mut table = Table::new(&header);
     let n = DVec3::Y;
     for (name, ior) in REFRACTIVE_INDICES {
@@ -107,14 +107,15 @@ proptest! {
         let Some(t) = refract(d, n, n_theta, n_phi) else {
             return Ok(());
         };
-        prop_assert!((t.length() - 1.0).abs() <= 1e-12, "|T| = {}", t.length());
-        prop_assert!(t.dot(d.cross(n)).abs() <= 1e-12, "T off the plane of D and N: {t}");
-        prop_assert!(t.dot(n) < 0.0, "T on the near side: T·N = {}", t.dot(n));
+        let what = format!("refract(D = {d}, N = {n}, n_θ = {n_theta}, n_φ = {n_phi}) = T = {t}");
+        prop_assert!((t.length() - 1.0).abs() <= 1e-12, "{what}: expected a unit T, got |T| = {}", t.length());
+        prop_assert!(t.dot(d.cross(n)).abs() <= 1e-12, "{what}: expected T in the plane of D and N, got T·(D×N) = {}", t.dot(d.cross(n)));
+        prop_assert!(t.dot(n) < 0.0, "{what}: expected T on the far side of the surface (T·N < 0), got T·N = {}", t.dot(n));
         let (lhs, rhs) = (n_theta * sin_between(d, n), n_phi * sin_between(t, n));
-        prop_assert!((lhs - rhs).abs() <= 1e-12, "n_θ sin θ = {lhs}, n_φ sin φ = {rhs}");
+        prop_assert!((lhs - rhs).abs() <= 1e-12, "{what}: expected Snell's law n_θ sin θ = n_φ sin φ, got n_θ sin θ = {lhs}, n_φ sin φ = {rhs}");
         // and T goes on along the surface the way D did (not bent back
         // across the normal)
-        prop_assert!(t.dot(d) > 0.0);
+        prop_assert!(t.dot(d) > 0.0, "{what}: expected T to go on the way D goes (T·D > 0), got T·D = {}: bent back across the normal", t.dot(d));
     }
 
     /// Total internal reflection exactly when sin θ > n_φ/n_θ (away from a
@@ -123,18 +124,21 @@ proptest! {
     fn none_exactly_past_the_critical_angle((d, n, n_theta, n_phi) in crossing()) {
         let (sin_theta, limit) = (sin_between(d, n), n_phi / n_theta);
         let t = refract(d, n, n_theta, n_phi);
+        let what = format!("refract(D = {d}, N = {n}, n_θ = {n_theta}, n_φ = {n_phi})");
         if sin_theta > limit * (1.0 + 1e-9) {
-            prop_assert!(t.is_none(), "sin θ = {sin_theta} > {limit}, yet T = {t:?}");
+            prop_assert!(t.is_none(), "{what}: sin θ = {sin_theta} > n_φ/n_θ = {limit}: expected None (total internal reflection), got {t:?}");
         } else if sin_theta < limit * (1.0 - 1e-9) {
-            prop_assert!(t.is_some(), "sin θ = {sin_theta} < {limit}, yet no T");
+            prop_assert!(t.is_some(), "{what}: sin θ = {sin_theta} < n_φ/n_θ = {limit}: expected a T, got None");
         }
     }
 
     /// Between equal indices nothing bends: T = D.
     #[test]
     fn equal_indices_do_not_bend((d, n, ior, _) in crossing()) {
-        let t = refract(d, n, ior, ior).expect("equal indices never reflect totally");
-        prop_assert!((t - d).length() <= 1e-9, "T = {t}, D = {d}");
+        let t = refract(d, n, ior, ior);
+        prop_assert!(t.is_some(), "refract(D = {d}, N = {n}, {ior}, {ior}): expected T = D (equal indices), got None");
+        let t = t.unwrap();
+        prop_assert!((t - d).length() <= 1e-9, "refract(D = {d}, N = {n}, {ior}, {ior}): expected T = D (equal indices do not bend), got T = {t}");
     }
 }
 
@@ -204,18 +208,44 @@ fn at_and_around_the_critical_angle() {
                 .collect::<Vec<_>>()
         };
         let below = refracted(critical - 1e-6);
-        assert!(below.iter().all(|(n, t)| {
-            t.is_some_and(|t| {
+        let wrong_below = below.iter().find(|(n, t)| {
+            !t.is_some_and(|t| {
                 (t.length() - 1.0).abs() < 1e-12 && t.dot(*n) < -1e-4
             })
-        }));
+        });
+        assert!(
+            wrong_below.is_none(),
+            "{name} (n = {ior}) into vacuum, 1e-6 rad below the critical \
+             angle {critical}: expected a unit T through the surface (T·N < \
+             -1e-4), got {:?} for N = {}",
+            wrong_below.unwrap().1,
+            wrong_below.unwrap().0
+        );
         let above = refracted(critical + 1e-6);
-        assert!(above.iter().all(|(_, t)| t.is_none()), "{name}");
+        let wrong_above = above.iter().find(|(_, t)| t.is_some());
+        assert!(
+            wrong_above.is_none(),
+            "{name} (n = {ior}) into vacuum, 1e-6 rad past the critical angle \
+             {critical}: expected None (total internal reflection), got \
+             {:?} for N = {}",
+            wrong_above.unwrap().1,
+            wrong_above.unwrap().0
+        );
         let at = refracted(critical);
         for (n, t) in &at {
             if let Some(t) = t {
-                assert!((t.length() - 1.0).abs() < 1e-12, "{name}: {t}");
-                assert!(t.dot(*n).abs() < 1e-7, "{name}: T·N = {}", t.dot(*n));
+                assert!(
+                    (t.length() - 1.0).abs() < 1e-12,
+                    "{name} (n = {ior}) at its critical angle: expected None \
+                     or a unit T, got {t} of length {}",
+                    t.length()
+                );
+                assert!(
+                    t.dot(*n).abs() < 1e-7,
+                    "{name} (n = {ior}) at its critical angle: expected None \
+                     or a T grazing the surface (|T·N| < 1e-7), got T·N = {}",
+                    t.dot(*n)
+                );
             }
         }
         // The reference: 826 (water), 864 (glass) and 695 (diamond) of the
@@ -242,18 +272,39 @@ fn grazing_incidence_from_the_less_dense_side() {
                 let theta = std::f64::consts::FRAC_PI_2 - gap;
                 for &(n, u) in &frames {
                     let d = at_angle(n, u, theta);
-                    let t = refract(d, n, 1.0, ior)
-                        .expect("entering never reflects totally");
-                    assert!(t.is_finite(), "n = {ior}, θ = {theta}: {t}");
-                    assert!((t.length() - 1.0).abs() < 1e-12, "n = {ior}: {t}");
+                    let what = format!(
+                        "refract(D = {d}, N = {n}, 1, {ior}) at θ = 90° − \
+                         {gap:e} rad"
+                    );
+                    let Some(t) = refract(d, n, 1.0, ior) else {
+                        panic!(
+                            "{what}: expected a T (entering a denser medium \
+                             never reflects totally), got None"
+                        );
+                    };
+                    assert!(
+                        t.is_finite(),
+                        "{what}: expected a finite T, got {t}"
+                    );
+                    assert!(
+                        (t.length() - 1.0).abs() < 1e-12,
+                        "{what}: expected a unit T, got {t} of length {}",
+                        t.length()
+                    );
                     // (at exactly 90° into vacuum, T = D grazes the surface:
                     // T·N is D·N, a rounding error either side of 0)
-                    assert!(t.dot(n) <= 1e-15, "n = {ior}: T·N = {}", t.dot(n));
+                    assert!(
+                        t.dot(n) <= 1e-15,
+                        "{what}: expected T through the surface (T·N ≤ 0), \
+                         got T·N = {}",
+                        t.dot(n)
+                    );
                     let (lhs, rhs) =
                         (sin_between(d, n), ior * sin_between(t, n));
                     assert!(
                         (lhs - rhs).abs() < 1e-12,
-                        "n = {ior}: {lhs} vs {rhs}"
+                        "{what}: expected Snell's law sin θ = n sin φ, got \
+                         sin θ = {lhs}, n sin φ = {rhs}"
                     );
                     // φ is θc within the gap (dφ/dθ ≤ 1 up here) and a few
                     // ulps of angle (near 90°, where vacuum takes φ = θ, a few ulps
@@ -262,7 +313,9 @@ fn grazing_incidence_from_the_less_dense_side() {
                     let tolerance = if ior == 1.0 { 1e-7 } else { 1e-9 };
                     assert!(
                         (phi - limit).abs() <= gap + tolerance,
-                        "n = {ior}, gap {gap}: φ = {phi}"
+                        "{what}: expected φ within {gap:e} rad of the \
+                         critical angle {limit} (what grazes in leaves at \
+                         θc), got φ = {phi}"
                     );
                 }
             }

@@ -23,6 +23,10 @@ fn world(toml: &str) -> World {
     ch03::parse(toml, "test.toml").expect("the test scene builds")
 }
 
+/// Render options for tests: no progress bar, and a pool of `threads`
+/// threads of its own (`Some`), started from the test's thread: a panic in
+/// a row (a `todo!()` in student mode) is then reported with the test that
+/// made it, not with whichever test started rayon's global pool.
 fn quiet(threads: Option<usize>) -> RenderOptions {
     RenderOptions {
         threads,
@@ -31,7 +35,7 @@ fn quiet(threads: Option<usize>) -> RenderOptions {
 }
 
 fn draw(world: &World, fresnel: Fresnel) -> (Image, RayCounts) {
-    render(world, &DEFAULT_STOP, fresnel, &quiet(None)).unwrap()
+    render(world, &DEFAULT_STOP, fresnel, &quiet(Some(2))).unwrap()
 }
 
 /// The air bubble in the water ball: the checks through the water, and
@@ -51,8 +55,17 @@ fn bubble_ascii() {
 #[test]
 fn bubble_counts() {
     let (_, counts) = draw(&scene("bubble.toml", 64, 36), Fresnel::Exact);
-    assert!(counts.total_internal_reflections > 0);
-    assert_eq!(counts.medium_mismatches, 0);
+    assert!(
+        counts.total_internal_reflections > 0,
+        "the bubble at 64×36: total internal reflections: expected some \
+         (rays in the water meet the bubble past 48.8°), got none"
+    );
+    assert!(
+        counts.medium_mismatches == 0,
+        "the bubble at 64×36: crossings that contradict the stack of media: \
+         expected 0, got {}",
+        counts.medium_mismatches
+    );
     insta::assert_snapshot!(format!("{counts:#?}"));
 }
 
@@ -173,12 +186,39 @@ fn a_ray_near_the_rim_leaves_through_the_far_side() {
     for ior in [1.5, 1.33, 1.0003, 1.0] {
         let sweep = sweep_the_rim(ior);
         println!("n = {ior}: {sweep:?}");
-        assert_eq!(sweep.hits, 1000, "n = {ior}: {sweep:?}");
-        assert_eq!(sweep.wrong_exits, 0, "n = {ior}: {sweep:?}");
-        assert_eq!(sweep.counts.medium_mismatches, 0, "n = {ior}: {sweep:?}");
-        assert_eq!(sweep.counts.total_internal_reflections, 0, "n = {ior}");
+        let ball =
+            format!("a clear ball of n = {ior}, rays ever closer to its rim");
+        assert!(
+            sweep.hits == 1000,
+            "{ball}: rays that hit it: expected all 1000, got {}",
+            sweep.hits
+        );
+        assert!(
+            sweep.wrong_exits == 0,
+            "{ball}: rays inside whose next hit is not the far end of their \
+             chord (a hit at t ≈ 0 where they start, or none): expected 0, \
+             got {}",
+            sweep.wrong_exits
+        );
+        assert!(
+            sweep.counts.medium_mismatches == 0,
+            "{ball}: crossings that contradict the stack of media: expected \
+             0, got {}",
+            sweep.counts.medium_mismatches
+        );
+        assert!(
+            sweep.counts.total_internal_reflections == 0,
+            "{ball}: total internal reflections: expected 0 (inside a ball no \
+             ray meets the surface past the critical angle), got {}",
+            sweep.counts.total_internal_reflections
+        );
         let allowed = if ior == 1.0 { 0.3 } else { 1e-9 };
-        assert!(sweep.worst_chord_error < allowed, "n = {ior}: {sweep:?}");
+        assert!(
+            sweep.worst_chord_error < allowed,
+            "{ball}: the largest relative error of a chord: expected below \
+             {allowed}, got {}",
+            sweep.worst_chord_error
+        );
     }
 }
 
@@ -260,8 +300,17 @@ fn nested_objects_have_no_medium_mismatches() {
     ] {
         let (_, counts) = draw(&world, Fresnel::Exact);
         println!("{name}: {counts:?}");
-        assert_eq!(counts.medium_mismatches, 0, "{name}: {counts:?}");
-        assert!(counts.transmitted > 2000, "{name}: {counts:?}");
+        assert!(
+            counts.medium_mismatches == 0,
+            "{name}: crossings that contradict the stack of media: expected \
+             0, got {}",
+            counts.medium_mismatches
+        );
+        assert!(
+            counts.transmitted > 2000,
+            "{name}: transmitted rays: expected more than 2000, got {}",
+            counts.transmitted
+        );
     }
 }
 
@@ -294,8 +343,18 @@ fn coincident_surfaces_show_the_last_object() {
             .filter(|(a, b)| a != b)
             .count();
         println!("{counts:?}, {differing} differing");
-        assert_eq!(counts.medium_mismatches, 0);
-        assert_eq!(differing, 0);
+        assert!(
+            counts.medium_mismatches == 0,
+            "two coincident balls: crossings that contradict the stack of \
+             media: expected 0, got {}",
+            counts.medium_mismatches
+        );
+        assert!(
+            differing == 0,
+            "two coincident balls: pixels that differ from the last ball \
+             alone: expected 0 (the object listed last is the only one hit), \
+             got {differing}"
+        );
     }
 }
 
@@ -350,7 +409,9 @@ fn check_weights(tree: &[LoggedRay], name: &str) {
         let w = ray.path.weight;
         assert!(
             w.min_element() >= 0.0 && w.max_element() <= 1.0,
-            "{name}: {ray:?}"
+            "{name}: a ray at depth {}: expected a weight between 0 and 1 in \
+             every channel, got {w}",
+            ray.path.depth
         );
         let depth = ray.path.depth as usize;
         if per_depth.len() <= depth {
@@ -361,7 +422,8 @@ fn check_weights(tree: &[LoggedRay], name: &str) {
     for (depth, sum) in per_depth.iter().enumerate() {
         assert!(
             sum.max_element() <= 1.0 + 1e-12,
-            "{name}: depth {depth} carries {sum}"
+            "{name}: the rays at depth {depth} together: expected a weight of \
+             at most 1 (a split hands on kr + kt ≤ 1), got {sum}"
         );
     }
 }
@@ -382,8 +444,23 @@ fn same_render_for_one_and_two_threads() {
             .map(|c| c.to_array().map(f64::to_bits))
             .collect::<Vec<_>>()
     };
-    assert_eq!(bits(&one.0), bits(&two.0));
-    assert_eq!(one.1, two.1);
+    let differing = bits(&one.0)
+        .iter()
+        .zip(&bits(&two.0))
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(
+        differing == 0,
+        "pixels that differ between one thread and two: expected 0 (every \
+         pixel is traced on its own), got {differing}"
+    );
+    assert!(
+        one.1 == two.1,
+        "ray counts: expected the same on one thread and on two, got {:?} \
+         and {:?}",
+        one.1,
+        two.1
+    );
 }
 
 /// The root mean square difference of two images, in linear light.
@@ -412,7 +489,16 @@ fn schlick_is_closer_to_exact_than_no_fresnel() {
     // the reference: 0.0337 without Fresnel, 0.0109 with Schlick
     println!("RMSE to exact: off {off_error:.4}, Schlick {schlick_error:.4}");
     assert!(
-        schlick_error > 0.0 && off_error > 0.0 && rmse(&off, &schlick) > 0.0
+        schlick_error > 0.0 && off_error > 0.0 && rmse(&off, &schlick) > 0.0,
+        "the materials scene: expected three different pictures with Fresnel \
+         off, exact and by Schlick, got RMSE {off_error} (off to exact), \
+         {schlick_error} (Schlick to exact), {} (off to Schlick)",
+        rmse(&off, &schlick)
     );
-    assert!(schlick_error < 0.5 * off_error);
+    assert!(
+        schlick_error < 0.5 * off_error,
+        "the materials scene: expected Schlick's picture at most half as far \
+         from the exact one as the picture without Fresnel ({off_error}), got \
+         {schlick_error}"
+    );
 }

@@ -12,7 +12,7 @@ const ANGLES: [f64; 5] = [0.0, 30.0, 60.0, 80.0, 89.0];
 #[test]
 fn reflectance_table() {
     let mut header = vec!["material".to_string(), "way".to_string()];
-    header.extend(ANGLES.iter().map(|a| format!("{a}°")));
+    header.extend(ANGLES.iter().map(|a| format!("R at {a}°: exact / Schlick")));
     let mut table = Table::new(&header);
     for (name, ior) in REFRACTIVE_INDICES {
         for (way, n_theta, n_phi) in [("in", 1.0, ior), ("out", ior, 1.0)] {
@@ -70,10 +70,18 @@ fn largest_error_table() {
         // peak, hence the 1e-6)
         assert!(
             (in_error - out_error).abs() < 1e-6,
-            "{name}: {in_error} vs {out_error}"
+            "{name} (n = {ior}): expected the same largest error into it and \
+             out of it (leaving, Schlick takes the angle on the less dense \
+             side), got {in_error} in (at θ = {in_at}°) and {out_error} out \
+             (at θ = {out_at}°)"
         );
         if ior > 1.1 {
-            assert!(in_error <= 0.08 && out_error <= 0.08, "{name}");
+            assert!(
+                in_error <= 0.08 && out_error <= 0.08,
+                "{name} (n = {ior}): expected Schlick within 0.08 of the \
+                 exact R, got {in_error} off in (at θ = {in_at}°) and \
+                 {out_error} out (at θ = {out_at}°)"
+            );
         }
         for (way, error, at) in
             [("in", in_error, in_at), ("out", out_error, out_at)]
@@ -97,11 +105,19 @@ fn largest_error_table() {
 #[test]
 fn index_matched_surfaces() {
     let c = 89f64.to_radians().cos();
-    assert!(fresnel(c, 1.0, 1.0) < 1e-20);
-    assert!(fresnel(c, 1.0, 1.0003) < 0.1);
+    assert!(fresnel(c, 1.0, 1.0) < 1e-20, "the exact R for n = 1 into 1");
+    assert!(
+        fresnel(c, 1.0, 1.0003) < 0.1,
+        "the exact R for vacuum into air"
+    );
     for n_phi in [1.0, 1.0003] {
-        assert!((schlick(c, 1.0, n_phi) - (1.0 - c).powi(5)).abs() < 1e-6);
-        assert!(schlick(c, 1.0, n_phi) > 0.9);
+        // R₀ is 0 or 2.2e-8 here: Schlick is (1 − cos 89°)⁵ = 0.91573…
+        let got = schlick(c, 1.0, n_phi);
+        assert!(
+            (got - 0.915_731_1).abs() < 1e-6,
+            "schlick(cos 89°, 1, {n_phi}): expected 0.9157311 (R₀ is \
+             about 0, so R is (1 − cos 89°)⁵), got {got}"
+        );
     }
 }
 
@@ -114,12 +130,13 @@ fn indices() -> impl Strategy<Value = (f64, f64)> {
 proptest! {
     #![proptest_config(seeded(512))]
 
-    /// At normal incidence Schlick is R₀, the exact reflectance there.
+    /// At normal incidence Schlick is R₀, the exact reflectance there
+    /// (`fresnel`, the reference's exact equations, tested on their own in
+    /// `tests/fresnel_and_media.rs`).
     #[test]
     fn normal_incidence_is_r0((n_theta, n_phi) in indices()) {
-        let r0 = ((n_theta - n_phi) / (n_theta + n_phi)).powi(2);
-        prop_assert!((schlick(1.0, n_theta, n_phi) - r0).abs() <= 1e-12);
-        prop_assert!((fresnel(1.0, n_theta, n_phi) - r0).abs() <= 1e-12);
+        let (exact, got) = (fresnel(1.0, n_theta, n_phi), schlick(1.0, n_theta, n_phi));
+        prop_assert!((got - exact).abs() <= 1e-12, "schlick(cos θ = 1, {n_theta}, {n_phi}): expected R₀ = {exact} (the exact reflectance at normal incidence), got {got}");
     }
 
     /// R is a fraction, and never drops as θ grows (the light glances off
@@ -135,8 +152,10 @@ proptest! {
             schlick(low.cos(), n_theta, n_phi),
             schlick(high.cos(), n_theta, n_phi),
         );
-        prop_assert!((0.0..=1.0).contains(&r_low) && (0.0..=1.0).contains(&r_high));
-        prop_assert!(r_high >= r_low - 1e-15, "R({low}) = {r_low} > R({high}) = {r_high}");
+        for (theta, r) in [(low, r_low), (high, r_high)] {
+            prop_assert!((0.0..=1.0).contains(&r), "schlick(cos {:.4}°, {n_theta}, {n_phi}): expected R between 0 and 1, got {r}", theta.to_degrees());
+        }
+        prop_assert!(r_high >= r_low - 1e-15, "n_θ = {n_theta}, n_φ = {n_phi}: expected R to rise with θ, got R({:.4}°) = {r_low} > R({:.4}°) = {r_high}", low.to_degrees(), high.to_degrees());
     }
 
     /// Past the critical angle all the light is reflected: R = 1. Just
@@ -147,8 +166,10 @@ proptest! {
         prop_assume!(n_theta > n_phi * 1.001);
         let critical = critical_angle(n_theta, n_phi).unwrap();
         let theta = critical + past * (std::f64::consts::FRAC_PI_2 - critical);
-        prop_assert!(schlick(theta.cos(), n_theta, n_phi) >= 1.0 - 1e-12);
+        let r_past = schlick(theta.cos(), n_theta, n_phi);
+        prop_assert!(r_past >= 1.0 - 1e-12, "schlick(cos {:.4}°, {n_theta}, {n_phi}), past the critical angle {:.4}°: expected R = 1 (total internal reflection), got {r_past}", theta.to_degrees(), critical.to_degrees());
         let before = critical * (1.0 - past);
-        prop_assert!(schlick(before.cos(), n_theta, n_phi) < 1.0);
+        let r_before = schlick(before.cos(), n_theta, n_phi);
+        prop_assert!(r_before < 1.0, "schlick(cos {:.4}°, {n_theta}, {n_phi}), below the critical angle {:.4}°: expected R < 1 (light still gets out), got {r_before}", before.to_degrees(), critical.to_degrees());
     }
 }

@@ -11,14 +11,19 @@ use common::{polygon, stage_from};
 fn assert_agree(name: &str, stage: &Stage) -> Agreement {
     let (raster, _) = rasterize(stage);
     let agreement = compare(stage, &raster, &raycast(stage));
+    let elsewhere = &agreement.elsewhere;
     assert!(
-        agreement.elsewhere.is_empty(),
-        "{name}: the ids differ away from every edge at {:?}",
-        agreement.elsewhere
+        elsewhere.is_empty(),
+        "{name}: pixels whose ids differ between the rasterizer and the ray \
+         caster away from every edge: expected 0 (the two sampling rules \
+         may disagree only on edges), got {}, the first at {:?}",
+        elsewhere.len(),
+        &elsewhere[..elsewhere.len().min(5)]
     );
     assert!(
         agreement.worst_depth <= 1e-9,
-        "{name}: the depths differ by {} (relative)",
+        "{name}: the largest relative difference of the depths where both \
+         methods show the same object: expected at most 1e-9, got {}",
         agreement.worst_depth
     );
     agreement
@@ -30,15 +35,29 @@ fn assert_agree(name: &str, stage: &Stage) -> Agreement {
 #[test]
 fn shapes_agree_at_64x36() {
     let agreement = assert_agree("shapes 64×36", &shapes(2, 64, 36));
-    assert_eq!(agreement.pixels, 64 * 36);
-    assert_eq!(agreement.differing(), 0, "{:?}", agreement.on_edges);
+    assert_eq!(agreement.pixels, 64 * 36, "pixels compared");
+    assert!(
+        agreement.differing() == 0,
+        "shapes 64×36: pixels whose ids differ between the rasterizer and \
+         the ray caster: expected 0 (no edge passes this close to a pixel \
+         centre here), got {}, the first at {:?}",
+        agreement.differing(),
+        &agreement.on_edges[..agreement.on_edges.len().min(5)]
+    );
 }
 
 #[test]
 fn shapes_agree_at_160x90() {
     let agreement = assert_agree("shapes 160×90", &shapes(2, 160, 90));
-    assert_eq!(agreement.pixels, 160 * 90);
-    assert_eq!(agreement.differing(), 0, "{:?}", agreement.on_edges);
+    assert_eq!(agreement.pixels, 160 * 90, "pixels compared");
+    assert!(
+        agreement.differing() == 0,
+        "shapes 160×90: pixels whose ids differ between the rasterizer and \
+         the ray caster: expected 0 (no edge passes this close to a pixel \
+         centre here), got {}, the first at {:?}",
+        agreement.differing(),
+        &agreement.on_edges[..agreement.on_edges.len().min(5)]
+    );
 }
 
 /// Pixels per scene unit in the fan scene: the camera at (0, 0, 4) looks
@@ -108,17 +127,23 @@ fn a_fan_with_edges_through_pixel_centres() {
     let inside = |c: u32, r: u32| (4..28).contains(&c) && (4..28).contains(&r);
     for row in 0..32 {
         for column in 0..32 {
-            assert_eq!(
-                raster.id_at(column, row).is_some(),
-                inside(column, row),
-                "pixel ({column}, {row})"
+            let (drawn, expected) =
+                (raster.id_at(column, row).is_some(), inside(column, row));
+            assert!(
+                drawn == expected,
+                "the fan, pixel ({column}, {row}): expected {} (the fan \
+                 covers the pixel centres of [4.5, 28.5)², its top and left \
+                 sides its own), got {}",
+                if expected { "drawn" } else { "not drawn" },
+                if drawn { "drawn" } else { "not drawn" }
             );
         }
     }
-    assert_eq!(
-        counts.covered,
-        24 * 24,
-        "pixels covered, counted with repeats"
+    assert!(
+        counts.covered == 24 * 24,
+        "the fan: pixels covered, counted with repeats: expected 576 (each \
+         of the 24×24 pixels once), got {}",
+        counts.covered
     );
     let agreement = assert_agree("fan", &stage);
     insta::assert_snapshot!(format!(
@@ -173,11 +198,22 @@ fn rasterized_depths_are_the_ray_casters() {
         }
     }
     // most of the image shows an object (the sky is the top quarter)
-    assert!(compared > 64 * 36 / 2, "only {compared} pixels compared");
+    assert!(
+        compared > 64 * 36 / 2,
+        "pixels where both methods show the same object: expected more than \
+         half of 64×36, got {compared}"
+    );
     // and the background stays infinitely far in both
     for (i, id) in raster.id.iter().enumerate() {
         if id.is_none() {
-            assert_eq!(raster.depth[i], f64::INFINITY, "background pixel {i}");
+            assert!(
+                raster.depth[i] == f64::INFINITY,
+                "background pixel ({}, {}): expected the depth +∞ (nothing \
+                 drawn there), got {}",
+                i % 64,
+                i / 64,
+                raster.depth[i]
+            );
         }
     }
 }

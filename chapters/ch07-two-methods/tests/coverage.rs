@@ -92,31 +92,42 @@ fn hand_worked_pixels() {
     // down-right: its edge. One of the two covers the centre.
     let upper_left = [p(2.0, 2.0), p(3.0, 2.0), p(2.0, 3.0)];
     let lower_right = [p(3.0, 2.0), p(3.0, 3.0), p(2.0, 3.0)];
-    assert!(!covers(&upper_left, p(2.5, 2.5)), "upper-left half");
-    assert!(covers(&lower_right, p(2.5, 2.5)), "lower-right half");
     // a triangle with its corners on pixel centres: its left and top
     // edges are its own, its right and bottom edges are not
     let t = [p(0.5, 0.5), p(4.5, 0.5), p(0.5, 4.5)];
-    assert!(covers(&t, p(1.5, 1.5)), "inside");
-    assert!(covers(&t, p(2.5, 0.5)), "on the top edge");
-    assert!(covers(&t, p(0.5, 2.5)), "on the left edge");
-    assert!(covers(&t, p(0.5, 0.5)), "the top-left corner");
-    assert!(
-        !covers(&t, p(2.5, 2.5)),
-        "on the hypotenuse (inside up-left)"
-    );
-    assert!(!covers(&t, p(4.5, 0.5)), "the top-right corner");
-    assert!(!covers(&t, p(0.5, 4.5)), "the bottom-left corner");
-    assert!(!covers(&t, p(3.5, 1.5)), "on the hypotenuse again");
-    assert!(!covers(&t, p(3.5, 3.5)), "outside");
     // a right edge going straight down, inside to its left: not owned
     let right = [p(4.5, 0.5), p(4.5, 4.5), p(0.5, 2.5)];
-    assert!(!covers(&right, p(4.5, 2.5)), "on a right edge");
-    assert!(covers(&right, p(3.5, 2.5)), "just left of it");
     // a bottom edge, inside above it: not owned
     let bottom = [p(0.5, 4.5), p(4.5, 4.5), p(2.5, 0.5)];
-    assert!(!covers(&bottom, p(2.5, 4.5)), "on a bottom edge");
-    assert!(covers(&bottom, p(2.5, 3.5)), "just above it");
+    #[rustfmt::skip]
+    let cases = [
+        (upper_left, (2.5, 2.5), false,
+            "on the hypotenuse of the upper-left half (inside up-left: not its edge)"),
+        (lower_right, (2.5, 2.5), true,
+            "on the hypotenuse of the lower-right half (inside down-right: its edge)"),
+        (t, (1.5, 1.5), true, "inside"),
+        (t, (2.5, 0.5), true, "on the top edge (its own)"),
+        (t, (0.5, 2.5), true, "on the left edge (its own)"),
+        (t, (0.5, 0.5), true, "the top-left corner (on two edges of its own)"),
+        (t, (2.5, 2.5), false, "on the hypotenuse (inside up-left: not its edge)"),
+        (t, (4.5, 0.5), false, "the top-right corner (on the hypotenuse)"),
+        (t, (0.5, 4.5), false, "the bottom-left corner (on the hypotenuse)"),
+        (t, (3.5, 1.5), false, "on the hypotenuse again"),
+        (t, (3.5, 3.5), false, "outside"),
+        (right, (4.5, 2.5), false, "on a right edge (inside to its left: not its edge)"),
+        (right, (3.5, 2.5), true, "just left of the right edge, inside"),
+        (bottom, (2.5, 4.5), false, "on a bottom edge (inside above it: not its edge)"),
+        (bottom, (2.5, 3.5), true, "just above the bottom edge, inside"),
+    ];
+    for (triangle, (x, y), expected, where_) in cases {
+        let got = covers(&triangle, p(x, y));
+        assert!(
+            got == expected,
+            "covers({:?}, ({x}, {y})), {where_}: expected {expected}, got \
+             {got}",
+            triangle.map(|c| (c.x, c.y))
+        );
+    }
 }
 
 /// Small triangles on an 8×8 pixel grid, each in both windings (the
@@ -160,10 +171,20 @@ fn coverage_tables() {
             covered(&t, 8, 8)
         ));
     }
-    assert_eq!(covered(&triangles[0].1, 8, 8), 21);
-    assert_eq!(covered(&triangles[1].1, 8, 8), 15);
-    assert_eq!(covered(&triangles[5].1, 8, 8), 0);
-    assert_eq!(covered(&triangles[6].1, 8, 8), 1);
+    for (i, expected, why) in [
+        (0, 21, "the centres with c + r < 6: 6 + 5 + … + 1"),
+        (1, 15, "the other 36 − 21 of the square's centres"),
+        (5, 0, "no pixel centre inside, one on an edge not its own"),
+        (6, 1, "one pixel centre, on an edge of its own"),
+    ] {
+        let (name, t) = &triangles[i];
+        let got = covered(t, 8, 8);
+        assert!(
+            got == expected,
+            "{name}: pixel centres covered: expected {expected} ({why}), got \
+             {got}"
+        );
+    }
     insta::assert_snapshot!(text);
 }
 
@@ -288,7 +309,11 @@ fn a_fan_around_a_pixel_centre_covers_each_pixel_once() {
     assert_tiles_the_square("fan", &fan, 0.5, 8.5, 10);
     // the hub (4.5, 4.5) lies on all 32 triangles; exactly one has it
     let hub_owners = fan.iter().filter(|t| covers(t, p(4.5, 4.5))).count();
-    assert_eq!(hub_owners, 1, "triangles covering the fan's hub");
+    assert!(
+        hub_owners == 1,
+        "triangles covering the fan's hub (4.5, 4.5), a corner of all 32: \
+         expected 1, got {hub_owners}"
+    );
     insta::assert_snapshot!(format!(
         "which triangle (a = hub, (0.5, 0.5), (1.5, 0.5); then clockwise):\n{}\ncount:\n{}",
         owner_text(&fan, 10, 10),
@@ -353,14 +378,25 @@ fn degenerate_triangles_cover_nothing() {
     ];
     for (name, t) in degenerate {
         for t in [t, reversed(&t)] {
-            assert_eq!(covered(&t, 8, 8), 0, "{name} covers pixels");
+            let corners = t.map(|c| (c.x, c.y));
+            let n = covered(&t, 8, 8);
+            assert!(
+                n == 0,
+                "{name} {corners:?}, of zero area: pixel centres covered: \
+                 expected 0, got {n}"
+            );
             for q in [t[0], t[1], t[2], (t[0] + t[1]) / 2.0] {
-                assert!(!covers(&t, q), "{name} covers {q}, on it");
+                assert!(
+                    !covers(&t, q),
+                    "{name} {corners:?}, of zero area, at {q} on it: expected \
+                     not covered, got covered"
+                );
             }
-            assert_eq!(
-                barycentric(&t, p(2.5, 2.5)),
-                None,
-                "{name} has weights"
+            let weights = barycentric(&t, p(2.5, 2.5));
+            assert!(
+                weights.is_none(),
+                "barycentric({corners:?}, (2.5, 2.5)), {name}: expected None \
+                 (zero area), got {weights:?}"
             );
         }
     }
@@ -381,15 +417,21 @@ fn barycentric_table() {
         ("outside, left of a c", p(-1.0, 1.0)),
     ];
     let mut table = Table::new(&["point", "λa", "λb", "λc", "sum"]);
+    // the weights first (a wrong one fails on its row), then the windings
+    let mut windings = Vec::new();
     for (name, q) in probes {
-        let w = barycentric(&t, q).expect("the triangle has an area");
-        let back = reversed(&t);
+        let weights = |t: &[DVec2; 3]| {
+            barycentric(t, q).unwrap_or_else(|| {
+                panic!(
+                    "barycentric({:?}, {q}): expected weights (the triangle \
+                     has an area), got None",
+                    t.map(|c| (c.x, c.y))
+                )
+            })
+        };
+        let w = weights(&t);
         // the other winding: the same weights, b and c swapped
-        let wb = barycentric(&back, q).expect("the triangle has an area");
-        assert!(
-            (wb[0] - w[0]).abs() < 1e-15 && (wb[1] - w[2]).abs() < 1e-15,
-            "{name}: other winding"
-        );
+        windings.push((name, q, w, weights(&reversed(&t))));
         table.row(&[
             name.to_string(),
             num(w[0]),
@@ -399,6 +441,17 @@ fn barycentric_table() {
         ]);
     }
     insta::assert_snapshot!(table.to_string());
+    for (name, q, w, wb) in windings {
+        assert!(
+            (wb[0] - w[0]).abs() < 1e-15
+                && (wb[1] - w[2]).abs() < 1e-15
+                && (wb[2] - w[1]).abs() < 1e-15,
+            "{name} {q}: the triangle a, c, b (the other winding): expected \
+             the weights {:?} (those of a, b, c with b and c swapped), got \
+             {wb:?}",
+            [w[0], w[2], w[1]]
+        );
+    }
 }
 
 /// A coordinate on the half-pixel lattice of an 8×8 grid: 0, ½, 1, …, 8.
@@ -432,15 +485,21 @@ proptest! {
         let orders = [[a, b, c], [b, c, a], [c, a, b], [a, c, b], [c, b, a], [b, a, c]];
         let table = coverage_table(&t, 8, 8);
         for order in orders {
-            prop_assert_eq!(coverage_table(&order, 8, 8), table.clone(), "{:?}", order);
+            let other = coverage_table(&order, 8, 8);
+            let differ = (0..8u32)
+                .flat_map(|row| (0..8u32).map(move |column| (column, row)))
+                .find(|&(column, row)| {
+                    covers(&order, centre(column, row)) != covers(&t, centre(column, row))
+                });
+            prop_assert!(other == table, "the triangle {:?} and the same one as {:?}: expected the same pixels covered, got {}", t.map(|c| (c.x, c.y)), order.map(|c| (c.x, c.y)), differ.map_or(String::new(), |(column, row)| format!("pixel ({column}, {row}) covered by one and not the other")));
         }
         for row in 0..8 {
             for column in 0..8 {
                 let q = centre(column, row);
                 if strictly_inside(&t, q) {
-                    prop_assert!(covers(&t, q), "{:?} misses {} inside it", t, q);
+                    prop_assert!(covers(&t, q), "covers({:?}, {q}): expected true (strictly inside), got false", t.map(|c| (c.x, c.y)));
                 } else if !on_an_edge(&t, q) {
-                    prop_assert!(!covers(&t, q), "{:?} covers {} outside it", t, q);
+                    prop_assert!(!covers(&t, q), "covers({:?}, {q}): expected false (outside, off the edges), got true", t.map(|c| (c.x, c.y)));
                 }
             }
         }
@@ -462,9 +521,10 @@ proptest! {
             for column in 0..8 {
                 let q = centre(column, row);
                 let hits = usize::from(covers(&first, q)) + usize::from(covers(&second, q));
-                prop_assert!(hits <= 1, "{} covered twice by {:?} and {:?}", q, first, second);
+                let pair = format!("{:?} and {:?}", first.map(|c| (c.x, c.y)), second.map(|c| (c.x, c.y)));
+                prop_assert!(hits <= 1, "the triangles {pair}, sharing an edge, at {q}: expected covered at most once, got twice");
                 if on_segment(a, b, q) && q != a && q != b {
-                    prop_assert_eq!(hits, 1, "{} on the shared edge of {:?} and {:?}", q, first, second);
+                    prop_assert!(hits == 1, "the triangles {pair} at {q}, on their shared edge: expected covered by exactly one (the one that owns the edge), got {hits}");
                 }
             }
         }
@@ -479,15 +539,19 @@ proptest! {
         x in -20.0..20.0f64, y in -20.0..20.0f64,
     ) {
         let q = p(x, y);
-        let w = barycentric(&t, q).expect("the triangle has an area");
-        prop_assert!((w[0] + w[1] + w[2] - 1.0).abs() <= 1e-9, "sum {}", w[0] + w[1] + w[2]);
+        let corners = t.map(|c| (c.x, c.y));
+        let w = barycentric(&t, q);
+        prop_assert!(w.is_some(), "barycentric({corners:?}, {q}): expected weights (the triangle has an area), got None");
+        let w = w.unwrap();
+        let sum = w[0] + w[1] + w[2];
+        prop_assert!((sum - 1.0).abs() <= 1e-9, "barycentric({corners:?}, {q}) = {w:?}: expected weights summing to 1, got {sum}");
         let back = w[0] * t[0] + w[1] * t[1] + w[2] * t[2];
-        prop_assert!((back - q).length() <= 1e-9, "λ·corners = {} for {}", back, q);
+        prop_assert!((back - q).length() <= 1e-9, "barycentric({corners:?}, {q}) = {w:?}: expected λa·a + λb·b + λc·c = {q}, got {back}");
         if w.iter().all(|&l| l > 1e-9) {
-            prop_assert!(covers(&t, q), "{} inside {:?} with weights {:?}", q, t, w);
+            prop_assert!(covers(&t, q), "covers({corners:?}, {q}): expected true (all weights {w:?} positive: inside), got false");
         }
         if w.iter().any(|&l| l < -1e-9) {
-            prop_assert!(!covers(&t, q), "{} outside {:?} with weights {:?}", q, t, w);
+            prop_assert!(!covers(&t, q), "covers({corners:?}, {q}): expected false (a weight of {w:?} negative: outside), got true");
         }
     }
 }

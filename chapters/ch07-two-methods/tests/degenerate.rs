@@ -75,16 +75,33 @@ fn triangles_crossing_the_near_plane_are_clipped() {
     assert_eq!(counts.triangles, 1 + 2, "triangles drawn after clipping");
     let cast = raycast(&stage);
     let agreement = compare(&stage, &raster, &cast);
+    let elsewhere = &agreement.elsewhere;
     assert!(
-        agreement.elsewhere.is_empty(),
-        "the ids differ away from the edges at {:?}",
-        agreement.elsewhere
+        elsewhere.is_empty(),
+        "the floor and the wall, clipped: pixels whose ids differ between \
+         the rasterizer and the ray caster away from every edge: expected 0, \
+         got {}, the first at {:?}",
+        elsewhere.len(),
+        &elsewhere[..elsewhere.len().min(5)]
     );
-    assert!(agreement.worst_depth <= 1e-9, "{}", agreement.worst_depth);
+    assert!(
+        agreement.worst_depth <= 1e-9,
+        "the floor and the wall, clipped: the largest relative difference of \
+         the depths: expected at most 1e-9, got {}",
+        agreement.worst_depth
+    );
     // both objects are seen, the floor in a third of the image at least
     let seen = |id: usize| raster.id.iter().filter(|&&i| i == Some(id)).count();
-    assert!(seen(0) > 48 * 27 / 3, "floor pixels: {}", seen(0));
-    assert!(seen(1) > 20, "wall pixels: {}", seen(1));
+    assert!(
+        seen(0) > 48 * 27 / 3,
+        "floor pixels: expected more than a third of 48×27, got {}",
+        seen(0)
+    );
+    assert!(
+        seen(1) > 20,
+        "wall pixels: expected more than 20, got {}",
+        seen(1)
+    );
     insta::assert_snapshot!(format!(
         "{} pixels differ, all on edges\n\nrasterized ids (0 floor, 1 wall):\n{}",
         agreement.differing(),
@@ -124,12 +141,27 @@ fn triangles_behind_the_eye_or_edge_on_draw_nothing() {
     assert_eq!(clip_cases(&stage), (1, 0, 1), "(in front, across, behind)");
     let (raster, counts) = rasterize(&stage);
     // the edge-on one is drawn (it is in front) but covers nothing
-    assert_eq!(counts.triangles, 1);
-    assert_eq!(counts.covered, 0);
+    assert_eq!(counts.triangles, 1, "triangles drawn (the edge-on one)");
+    assert!(
+        counts.covered == 0,
+        "a triangle seen edge on (zero area on screen): pixels covered: \
+         expected 0, got {}",
+        counts.covered
+    );
     let cast = raycast(&stage);
-    assert!(raster.id.iter().all(Option::is_none), "rasterized");
-    assert!(cast.id.iter().all(Option::is_none), "ray-cast");
-    assert!(raster.depth.iter().all(|&z| z == f64::INFINITY));
+    let drawn = raster.id.iter().filter(|id| id.is_some()).count();
+    assert!(
+        drawn == 0,
+        "a triangle behind the eye and one seen edge on: pixels rasterized: \
+         expected 0, got {drawn}"
+    );
+    assert!(cast.id.iter().all(Option::is_none), "ray-cast pixels");
+    let set = raster.depth.iter().filter(|&&z| z != f64::INFINITY).count();
+    assert!(
+        set == 0,
+        "a triangle behind the eye and one seen edge on: depths set: \
+         expected 0 (every depth stays +∞), got {set}"
+    );
     // the edge-on triangle's corners all land on the column boundary
     // x = 24 (a whole number: no pixel centre is on it)
     let projection = Projection {
@@ -144,13 +176,25 @@ fn triangles_behind_the_eye_or_edge_on_draw_nothing() {
     // with the floor and the wall in front, nothing changes where they are
     let all = stage_with_all();
     let (raster, _) = rasterize(&all);
+    let others = raster
+        .id
+        .iter()
+        .filter(|&&id| !(id == Some(0) || id == Some(1) || id.is_none()))
+        .count();
     assert!(
-        raster
-            .id
-            .iter()
-            .all(|&id| id == Some(0) || id == Some(1) || id.is_none())
+        others == 0,
+        "the floor and the wall with the two triangles that draw nothing: \
+         pixels showing one of those two: expected 0, got {others}"
     );
-    assert_eq!(compare(&all, &raster, &raycast(&all)).elsewhere, []);
+    let elsewhere = compare(&all, &raster, &raycast(&all)).elsewhere;
+    assert!(
+        elsewhere.is_empty(),
+        "the floor, the wall and the two triangles that draw nothing: pixels \
+         whose ids differ between the two methods away from every edge: \
+         expected 0, got {}, the first at {:?}",
+        elsewhere.len(),
+        &elsewhere[..elsewhere.len().min(5)]
+    );
 }
 
 fn stage_with_all() -> Stage {
@@ -182,7 +226,10 @@ fn zero_area_mesh_triangles_are_skipped() {
     assert_eq!(stage.triangles.len(), 2);
     assert_eq!(stage.triangles[1].object, 1);
     let (raster, _) = rasterize(&stage);
-    assert!(raster.id.contains(&Some(1)), "the good triangle is drawn");
+    assert!(
+        raster.id.contains(&Some(1)),
+        "the mesh's one good triangle: expected it drawn, got no pixel"
+    );
 }
 
 /// A floor of 24 triangles around a hub behind the eye: the spokes ahead
@@ -236,11 +283,18 @@ fn a_fan_cut_by_the_near_plane_stays_watertight() {
         }
     }
     assert!(inside > 48 * 27 / 3, "floor pixels: {inside}");
-    assert_eq!(
-        (gaps, overreach),
-        (0, 0),
-        "(gaps, pixels drawn off the floor)"
+    assert!(
+        (gaps, overreach) == (0, 0),
+        "a floor fan cut by the near plane: gaps (floor pixels not drawn) \
+         and pixels drawn off the floor: expected 0 and 0, got {gaps} and \
+         {overreach}"
     );
     let drawn = raster.id.iter().filter(|id| id.is_some()).count() as u64;
-    assert_eq!(counts.covered, drawn, "pixels covered twice");
+    assert!(
+        counts.covered == drawn,
+        "a floor fan cut by the near plane: pixels covered, counted with \
+         repeats: expected {drawn}, one per pixel drawn (none covered \
+         twice), got {}",
+        counts.covered
+    );
 }

@@ -38,12 +38,27 @@ fn the_closer_surface_wins() {
     ];
     for (i, (z, kept, holds)) in steps.into_iter().enumerate() {
         let before = buffer.get(1, 2);
-        assert_eq!(
-            buffer.test_and_set(1, 2, z),
-            kept,
-            "step {i}: drawing depth {z} over {before}"
+        let got = buffer.test_and_set(1, 2, z);
+        let why = if kept {
+            "closer: keep it"
+        } else if z == before {
+            "as far: the first drawn stays"
+        } else if z.is_nan() {
+            "NaN is never closer"
+        } else {
+            "farther"
+        };
+        assert!(
+            got == kept,
+            "step {i}, drawing depth {z} over {before}: expected \
+             test_and_set to return {kept} ({why}), got {got}"
         );
-        assert_eq!(buffer.get(1, 2), holds, "step {i}: the depth kept");
+        let now = buffer.get(1, 2);
+        assert!(
+            now == holds,
+            "step {i}, drawing depth {z} over {before}: expected the pixel \
+             to hold {holds} afterwards, got {now}"
+        );
     }
 }
 
@@ -56,7 +71,12 @@ fn only_the_tested_pixel_changes() {
     let mut buffer = DepthBuffer::new(width, height);
     let drawn = [(4, 0, 1.0), (0, 2, 2.0), (2, 1, 3.0), (3, 2, 4.0)];
     for (column, row, z) in drawn {
-        assert!(buffer.test_and_set(column, row, z));
+        assert!(
+            buffer.test_and_set(column, row, z),
+            "drawing depth {z} at pixel ({column}, {row}), where nothing is \
+             drawn yet: expected true (anything finite is closer than +∞), \
+             got false"
+        );
     }
     for row in 0..height {
         for column in 0..width {
@@ -64,19 +84,37 @@ fn only_the_tested_pixel_changes() {
                 .iter()
                 .find(|&&(c, r, _)| (c, r) == (column, row))
                 .map_or(INF, |&(_, _, z)| z);
-            assert_eq!(
-                buffer.get(column, row),
-                expected,
-                "pixel ({column}, {row})"
+            let got = buffer.get(column, row);
+            assert!(
+                got == expected,
+                "a 5×3 buffer after drawing {drawn:?} (column, row, depth): \
+                 pixel ({column}, {row}): expected depth {expected}, got {got}"
             );
             let i = (row * width + column) as usize;
-            assert_eq!(buffer.depths()[i], expected, "depths()[{i}]");
+            let stored = buffer.depths()[i];
+            assert!(
+                stored == expected,
+                "a 5×3 buffer after drawing {drawn:?}: depths()[{i}], pixel \
+                 ({column}, {row}) row by row: expected {expected}, got \
+                 {stored}"
+            );
         }
     }
     // a rejected surface changes nothing anywhere
     let before = buffer.clone();
-    assert!(!buffer.test_and_set(4, 0, 1.5));
-    assert_eq!(buffer, before);
+    let got = buffer.test_and_set(4, 0, 1.5);
+    assert!(
+        !got,
+        "drawing depth 1.5 at pixel (4, 0), which holds 1: expected false \
+         (farther), got true"
+    );
+    assert!(
+        buffer == before,
+        "drawing depth 1.5 at pixel (4, 0), which holds 1: expected the \
+         buffer unchanged, got {:?} (was {:?})",
+        buffer.depths(),
+        before.depths()
+    );
 }
 
 /// Worked by hand. Between depths 1 and 3, halfway across the screen is
@@ -101,7 +139,11 @@ fn perspective_depth_by_hand() {
     }
     // a triangle facing the camera is at one depth everywhere
     let flat = perspective_depth([0.2, 0.3, 0.5], [4.0, 4.0, 4.0]);
-    assert!((flat - 4.0).abs() <= 1e-12, "{flat}");
+    assert!(
+        (flat - 4.0).abs() <= 1e-12,
+        "weights [0.2, 0.3, 0.5], depths [4, 4, 4]: expected 4 (all corners \
+         at one depth), got {flat}"
+    );
 }
 
 /// The screen weights of `q` in the triangle `s`, by Cramer's rule on
@@ -209,7 +251,11 @@ fn relative(a: f64, b: f64) -> f64 {
 fn perspective_depth_is_the_depth_of_the_point_seen() {
     let scene = Receding::new();
     let samples = scene.samples();
-    assert!(samples.len() > 100, "only {} pixels", samples.len());
+    assert!(
+        samples.len() > 100,
+        "pixels in the receding triangle: expected more than 100, got {}",
+        samples.len()
+    );
     let (mut worst, mut worst_linear) = (0.0f64, 0.0f64);
     for s in &samples {
         let (column, row, lambda, z, exact) =
@@ -223,7 +269,7 @@ fn perspective_depth_is_the_depth_of_the_point_seen() {
         worst = worst.max(relative(got, exact));
         worst_linear = worst_linear.max(relative(s.linear(), exact));
     }
-    assert!(worst <= 1e-9);
+    assert!(worst <= 1e-9, "the largest relative error: {worst}");
     assert!(
         worst_linear > 1.0 / 3.0,
         "linear interpolation is off by only {worst_linear}: the test triangle does not recede enough"

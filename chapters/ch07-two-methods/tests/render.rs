@@ -71,9 +71,27 @@ fn raster_counts() {
     {
         let (buffers, counts) = rasterize(&shapes(subdivisions, width, height));
         let shown = buffers.id.iter().filter(|id| id.is_some()).count() as u64;
-        assert!(counts.tested >= counts.covered, "{counts:?}");
-        assert!(counts.covered >= counts.shaded, "{counts:?}");
-        assert!(counts.shaded >= shown, "{counts:?}, {shown} pixels shown");
+        let scene = format!("shapes({subdivisions}) {width}×{height}");
+        assert!(
+            counts.tested >= counts.covered,
+            "{scene}: pixel centres covered: expected at most the {} tested, \
+             got {}",
+            counts.tested,
+            counts.covered
+        );
+        assert!(
+            counts.covered >= counts.shaded,
+            "{scene}: pixels shaded (closer than what they showed): expected \
+             at most the {} covered, got {}",
+            counts.covered,
+            counts.shaded
+        );
+        assert!(
+            counts.shaded >= shown,
+            "{scene}: pixels shaded: expected at least the {shown} pixels \
+             that show an object, got {}",
+            counts.shaded
+        );
         table.row(&[
             format!("shapes({subdivisions}) {width}×{height}"),
             counts.triangles.to_string(),
