@@ -123,13 +123,13 @@ impl InstaFailure {
     /// the diff that differ in more than their padding.
     pub fn describe(&self, expected: Option<&str>) -> String {
         let name = self.name();
-        if let Some(old) = expected {
-            if let Some(new) = self.new_text(old) {
-                return snapshot_table::first_difference(name, old, &new)
-                    .unwrap_or_else(|| {
-                        format!("snapshot {name} differs (in spacing only)")
-                    });
-            }
+        if let Some(old) = expected
+            && let Some(new) = self.new_text(old)
+        {
+            return snapshot_table::first_difference(name, old, &new)
+                .unwrap_or_else(|| {
+                    format!("snapshot {name} differs (in spacing only)")
+                });
         }
         self.diff_difference()
     }
