@@ -688,17 +688,28 @@ fn run_tests(
         Err(error) => (String::new(), Ended::NotStarted(error.to_string())),
         Ok(Ran {
             stdout,
+            stderr,
             exit: Exit::Status(status),
-        }) => (
-            stdout,
-            Ended::Exited {
-                success: status.success(),
-                how: describe_status(status),
-            },
-        ),
+        }) => {
+            let mut how = describe_status(status);
+            if let Some(test) = overflowed(&stderr) {
+                how = format!(
+                    "{test} overflowed its stack: a recursion that never \
+                     ends? {how}"
+                );
+            }
+            (
+                stdout,
+                Ended::Exited {
+                    success: status.success(),
+                    how,
+                },
+            )
+        }
         Ok(Ran {
             stdout,
             exit: Exit::TimedOut,
+            ..
         }) => {
             // Which tests there are, in the order libtest starts them.
             let mut list = test_command(
@@ -712,6 +723,7 @@ fn run_tests(
                 Ok(Ran {
                     stdout,
                     exit: Exit::Status(status),
+                    ..
                 }) if status.success() => parse_list(&stdout),
                 _ => Vec::new(),
             };
@@ -743,11 +755,14 @@ enum Exit {
 struct Ran {
     /// Everything the process printed on stdout (until it was killed).
     stdout: String,
+    /// Everything it printed on stderr: where a crash says what it was
+    /// (`thread 'x' has overflowed its stack`).
+    stderr: String,
     /// How it ended.
     exit: Exit,
 }
 
-/// Runs `command` (stdin empty, stdout captured, stderr discarded) for at
+/// Runs `command` (stdin empty, stdout and stderr captured) for at
 /// most `limit`. On Unix the process leads a process group of its own, and
 /// at the limit the whole group is killed: the process and anything it
 /// started. Ctrl-C still stops it: raystep's terminal signals are forwarded
@@ -756,15 +771,33 @@ fn run_with_limit(command: &mut Command, limit: Duration) -> io::Result<Ran> {
     command
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
-        .stderr(Stdio::null());
+        .stderr(Stdio::piped());
     process_group::prepare(command);
     let mut child = command.spawn()?;
     let group = process_group::Group::new(&child);
 
-    let captured = Arc::new(Mutex::new(Vec::new()));
-    let (done, finished_reading) = mpsc::channel();
-    let mut pipe = child.stdout.take().expect("stdout is piped");
-    let sink = Arc::clone(&captured);
+    let stdout = capture(child.stdout.take().expect("stdout is piped"));
+    let stderr = capture(child.stderr.take().expect("stderr is piped"));
+    let exit = wait_with_limit(&mut child, &group, Instant::now() + limit);
+    drop(group);
+    let exit = exit?;
+    Ok(Ran {
+        stdout: stdout.text(),
+        stderr: stderr.text(),
+        exit,
+    })
+}
+
+/// A pipe read to its end on a thread of its own.
+struct Captured {
+    bytes: Arc<Mutex<Vec<u8>>>,
+    finished: mpsc::Receiver<()>,
+}
+
+fn capture(mut pipe: impl Read + Send + 'static) -> Captured {
+    let bytes = Arc::new(Mutex::new(Vec::new()));
+    let (done, finished) = mpsc::channel();
+    let sink = Arc::clone(&bytes);
     std::thread::spawn(move || {
         let mut buffer = [0; 8192];
         while let Ok(n @ 1..) = pipe.read(&mut buffer) {
@@ -774,19 +807,31 @@ fn run_with_limit(command: &mut Command, limit: Duration) -> io::Result<Ran> {
         }
         let _ = done.send(());
     });
+    Captured { bytes, finished }
+}
 
-    let exit = wait_with_limit(&mut child, &group, Instant::now() + limit);
-    drop(group);
-    let exit = exit?;
-    // The pipe closes when the last process holding it has ended: at once
-    // after a kill. A process the binary started that outlives it (in
-    // another process group) could hold it open: do not wait for that.
-    let _ = finished_reading.recv_timeout(Duration::from_secs(2));
-    let stdout = String::from_utf8_lossy(
-        &captured.lock().unwrap_or_else(|e| e.into_inner()),
-    )
-    .into_owned();
-    Ok(Ran { stdout, exit })
+impl Captured {
+    /// What came through. The pipe closes when the last process holding it
+    /// has ended: at once after a kill. A process the binary started that
+    /// outlives it (in another process group) could hold it open: do not
+    /// wait for that.
+    fn text(self) -> String {
+        let _ = self.finished.recv_timeout(Duration::from_secs(2));
+        String::from_utf8_lossy(
+            &self.bytes.lock().unwrap_or_else(|e| e.into_inner()),
+        )
+        .into_owned()
+    }
+}
+
+/// The test whose thread overflowed its stack, from the runtime's note on
+/// stderr: `thread 'depth_one' (123) has overflowed its stack`.
+pub fn overflowed(stderr: &str) -> Option<&str> {
+    stderr.lines().find_map(|line| {
+        let rest = line.strip_prefix("thread '")?;
+        let (name, rest) = rest.split_once('\'')?;
+        rest.contains("has overflowed its stack").then_some(name)
+    })
 }
 
 /// Waits for `child` until `deadline`, then kills its process group.
@@ -1635,10 +1680,17 @@ fn verdict(
     let not_todo = failed
         .iter()
         .find(|(_, why)| !why.is_some_and(Failure::is_todo));
+    let crash = binaries.iter().find_map(|b| b.crashed.as_ref());
     if let Some((name, why)) = not_todo {
+        // A binary that crashes never prints why its tests failed.
+        if let (None, Some(crash)) = (why, crash) {
+            return Verdict::Failed(format!(
+                "{name}: failed, and {crash} before it could say why"
+            ));
+        }
         return Verdict::Failed(describe(name, *why));
     }
-    if let Some(crash) = binaries.iter().find_map(|b| b.crashed.as_ref()) {
+    if let Some(crash) = crash {
         return Verdict::Failed(crash.clone());
     }
     if failed.is_empty() {
@@ -1663,6 +1715,35 @@ fn describe(name: &str, why: Option<&Failure>) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_stack_overflow_names_its_test() {
+        let stderr = "\nthread 'recursion::depth_one' (7761) has overflowed \
+                      its stack\nfatal runtime error: stack overflow\n";
+        assert_eq!(overflowed(stderr), Some("recursion::depth_one"));
+        assert_eq!(overflowed("thread 'x' panicked at a.rs:1:1:\n"), None);
+    }
+
+    #[test]
+    fn a_failure_cut_short_by_a_crash_says_so() {
+        let binary = TestBinary {
+            target: Target::Test("recursion".into()),
+            results: vec![TestResult {
+                name: "depth_one".into(),
+                outcome: Outcome::Failed(None),
+            }],
+            crashed: Some("the test binary crashed (signal: 6)".into()),
+            timed_out: None,
+        };
+        assert_eq!(
+            verdict("recursion", &[&binary], None),
+            Verdict::Failed(
+                "depth_one: failed, and the test binary crashed (signal: 6) \
+                 before it could say why"
+                    .into()
+            )
+        );
+    }
 
     fn exercises(names: &[&str]) -> Vec<String> {
         names.iter().map(|s| s.to_string()).collect()
