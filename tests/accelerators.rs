@@ -1,7 +1,7 @@
 //! The seam between the objects and the tracers: a second collection, the
 //! brute-force list behind a bounding-box test, must give every tracer of
-//! chapters 03–07 exactly what the plain list gives it, on every chapter
-//! scene, without a line of those tracers changed. Chapters 08–10 hand the
+//! chapters 3–7 exactly what the plain list gives it, on every chapter
+//! scene, without a line of those tracers changed. Chapters 8–10 hand the
 //! same tracers their BVH, grid and kd-tree the same way.
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -124,7 +124,7 @@ const QUIET: RenderOptions = RenderOptions {
     progress: Progress::Never,
 };
 
-/// Every tracer of chapters 03–06, as the command line runs it, and the
+/// Every tracer of chapters 3–6, as the command line runs it, and the
 /// counts it keeps (rays, wrong shadows) as text.
 fn every_tracer(world: &World) -> Vec<(&'static str, Image, String)> {
     let (ch05_image, ch05_counts) =

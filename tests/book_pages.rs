@@ -98,11 +98,11 @@ fn every_listing_fits_the_column_without_impl_indent() {
 
 #[test]
 fn an_impl_method_is_listed_without_its_indent() {
-    // Chapter 01 lists `Line2::through`, a method inside `impl Line2`.
+    // Chapter 1 lists `Line2::through`, a method inside `impl Line2`.
     let (_, _, shown) = pages()
         .into_iter()
         .find(|(p, _, _)| name(p).starts_with("ch01"))
-        .expect("chapter 01's page");
+        .expect("chapter 1's page");
     assert!(
         shown.lines().any(|l| l.starts_with("pub fn through(")),
         "Line2::through should start at column 0"

@@ -1,4 +1,4 @@
-//! # Chapter 01 — implicit lines and planes
+//! # Chapter 1 — implicit lines and planes
 //!
 //! A line in 2D and a plane in 3D, each written implicitly as "the points
 //! where f is zero":
@@ -7,7 +7,7 @@
 //! * plane through P₀, P₁, P₂: `f(P) = N·P + d`.
 //!
 //! With a unit N the sign of f says which side a point is on and |f| is
-//! its distance. Every later chapter stands on these two: chapter 02 hits
+//! its distance. Every later chapter stands on these two: chapter 2 hits
 //! planes and tests polygon edges with lines.
 //!
 //! Student mode: with the feature `exercise` the modules marked below are

@@ -4,7 +4,7 @@ use ch01::rotate90;
 use raystep_core::DVec2;
 
 // ANCHOR: edge_function
-/// The edge function of the edge `a → b` at `p`: chapter 01's implicit
+/// The edge function of the edge `a → b` at `p`: chapter 1's implicit
 /// line through `a` and `b` before normalising, `N = R·(b − a)` and
 /// `f(p) = N·(p − a)`. Positive to the left of the edge; it is the signed
 /// distance times |b − a|, and the inside test needs only its sign.

@@ -1,10 +1,10 @@
-//! # Chapter 02 — plane and polygon hits
+//! # Chapter 2 — plane and polygon hits
 //!
 //! A ray `P(t) = P₀ + t·D` meets the plane `N·P + d = 0` at
 //! `t = −(N·P₀ + d) / (N·D)`. Whether the hit is inside a polygon lying
 //! in that plane is a 2D question: drop the coordinate the normal points
 //! along most, and test the projected point against the projected edges,
-//! each edge an implicit line from chapter 01.
+//! each edge an implicit line from chapter 1.
 //!
 //! Student mode: with the feature `exercise` the modules marked below are
 //! replaced by the stubs in `exercise/`.

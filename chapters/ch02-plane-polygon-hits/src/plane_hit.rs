@@ -42,9 +42,9 @@ pub fn intersect_plane(
     })
 }
 
-/// A plane as an object of a scene (chapter 03 on): chapter 01's plane, hit
+/// A plane as an object of a scene (chapter 3 on): chapter 1's plane, hit
 /// by [`intersect_plane`], with no bounds. (A newtype, because the plane
-/// itself is chapter 01's and knows nothing of rays.)
+/// itself is chapter 1's and knows nothing of rays.)
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct InfinitePlane(pub Plane);
 

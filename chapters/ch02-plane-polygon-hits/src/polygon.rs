@@ -31,7 +31,7 @@ pub struct Polygon {
 impl Polygon {
     /// The polygon with these vertices, in order. They are taken to lie in
     /// one plane: the plane through the first corner that fixes one
-    /// (chapter 01), with N turned to agree with the winding.
+    /// (chapter 1), with N turned to agree with the winding.
     pub fn new(vertices: Vec<DVec3>) -> Result<Polygon, PolygonError> {
         if vertices.len() < 3 {
             return Err(PolygonError::TooFewVertices(vertices.len()));
@@ -108,7 +108,7 @@ impl Polygon {
     // ANCHOR_END: intersect
 }
 
-/// A polygon as an object of a scene (chapter 03 on): its hit, and the box
+/// A polygon as an object of a scene (chapter 3 on): its hit, and the box
 /// around its vertices.
 impl Shape for Polygon {
     fn intersect(&self, ray: &Ray, interval: Interval) -> Option<Hit> {

@@ -15,7 +15,7 @@ fn polygon(vertices: Vec<DVec3>) -> Polygon {
     Polygon::new(vertices.clone()).unwrap_or_else(|e| {
         panic!(
             "Polygon::new({vertices:?}): expected a polygon, got the error \
-             \"{e}\" (it finds its plane with chapter 01's Plane::through)"
+             \"{e}\" (it finds its plane with chapter 1's Plane::through)"
         )
     })
 }

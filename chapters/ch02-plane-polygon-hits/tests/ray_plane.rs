@@ -11,7 +11,7 @@ fn v(x: f64, y: f64, z: f64) -> DVec3 {
 fn plane(p0: DVec3, p1: DVec3, p2: DVec3) -> Plane {
     Plane::through(p0, p1, p2).unwrap_or_else(|e| {
         panic!(
-            "chapter 01's Plane::through({p0}, {p1}, {p2}): expected a plane, \
+            "chapter 1's Plane::through({p0}, {p1}, {p2}): expected a plane, \
              got the error \"{e}\""
         )
     })

@@ -4,7 +4,7 @@ use raystep_world::{Accelerator, Object};
 
 /// The lecture's loop over the objects, with no speed-up at all: every ray
 /// is tested against every object. It is the first [`Accelerator`]; the
-/// bounding volumes, grids and kd-trees of chapters 08–10 answer the same
+/// bounding volumes, grids and kd-trees of chapters 8–10 answer the same
 /// two questions faster, and must give the same answers.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct BruteForce;
@@ -31,7 +31,7 @@ impl Accelerator for BruteForce {
     // ANCHOR_END: closest_hit
 
     // ANCHOR: any_hit
-    /// The same loop, cut short (chapter 04's shadow rays): a shadow ray
+    /// The same loop, cut short (chapter 4's shadow rays): a shadow ray
     /// only asks whether the light is blocked, not by what, so the first
     /// blocker found answers it. Nothing is sorted, no closest t is kept,
     /// and in a scene where most shadow rays are blocked most of the loop

@@ -1,4 +1,4 @@
-//! # Chapter 03 — illumination
+//! # Chapter 3 — illumination
 //!
 //! The lecture's ray tracer in its first form: for each pixel shoot a ray,
 //! for each object ask whether the ray hits it, keep the closest hit, and

@@ -7,7 +7,7 @@ pub struct LightSample {
     pub direction: DVec3,
     /// Iᵢ: the light's intensity per channel.
     pub intensity: DVec3,
-    /// Sᵢ: 1 if the point sees the light, 0 if it is in shadow (chapter 04
+    /// Sᵢ: 1 if the point sees the light, 0 if it is in shadow (chapter 4
     /// computes it; in this chapter every light is visible).
     pub visibility: f64,
 }

@@ -6,13 +6,13 @@ use raystep_scene::{Light, Material};
 // ANCHOR: shade
 /// The local model's terms where `ray` first hits the world, or None if it
 /// hits nothing. Every light counts as visible (Sᵢ = 1): shadows are
-/// chapter 04.
+/// chapter 4.
 pub fn shade(world: &World, ray: &Ray) -> Option<ShadingTerms> {
     shade_with(world, ray, |_, _, _| 1.0)
 }
 
 /// [`shade`] with Sᵢ from `visibility(hit, normal, light)`, where `normal`
-/// is the hit's normal turned toward the viewer. Chapter 04 passes its
+/// is the hit's normal turned toward the viewer. Chapter 4 passes its
 /// shadow rays here.
 pub fn shade_with(
     world: &World,
@@ -26,7 +26,7 @@ pub fn shade_with(
 
 /// Steps 2–4 of [`shade_with`] for a hit already found: the local model's
 /// terms at `hit` on object `object` (its index in `world.objects`), seen
-/// along `ray`. Chapters 05–06 call it
+/// along `ray`. Chapters 5–6 call it
 /// at every bounce of a recursive ray.
 pub fn shade_hit(
     world: &World,

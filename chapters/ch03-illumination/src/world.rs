@@ -1,4 +1,4 @@
-//! A scene file's shapes as the surfaces chapters 02 and 03 taught,
+//! A scene file's shapes as the surfaces chapters 2 and 03 taught,
 //! searched by the brute-force loop.
 use std::path::Path;
 use std::sync::Arc;
@@ -10,8 +10,8 @@ use raystep_world::{World, WorldError};
 
 use crate::{BruteForce, Sphere};
 
-/// The surface of one shape of a scene file: chapter 03's sphere, or
-/// chapter 02's plane or polygon (an error names what is wrong with a
+/// The surface of one shape of a scene file: chapter 3's sphere, or
+/// chapter 2's plane or polygon (an error names what is wrong with a
 /// degenerate polygon).
 pub fn shape(spec: &ShapeSpec) -> Result<Arc<dyn Shape>, String> {
     Ok(match spec {
@@ -28,7 +28,7 @@ pub fn shape(spec: &ShapeSpec) -> Result<Arc<dyn Shape>, String> {
     })
 }
 
-/// The world of `scene`, with chapter 03's shapes and the lecture's
+/// The world of `scene`, with chapter 3's shapes and the lecture's
 /// brute-force loop. `file` names the scene in errors.
 pub fn world(scene: &Scene, file: &str) -> Result<World, WorldError> {
     World::from_scene(scene, file, shape, Arc::new(BruteForce))

@@ -1,6 +1,6 @@
-//! # Chapter 04 — shadows
+//! # Chapter 4 — shadows
 //!
-//! Chapter 03 lit every point by every light (Sᵢ = 1). Here Sᵢ comes from a
+//! Chapter 3 lit every point by every light (Sᵢ = 1). Here Sᵢ comes from a
 //! *shadow ray*: from the hit point toward light i. If anything lies on
 //! it before the light, the point is in shadow, Sᵢ = 0; otherwise Sᵢ = 1.
 //!

@@ -7,7 +7,7 @@ use raystep_core::{Interval, Ray};
 ///
 /// A shadow ray asks a weaker question than a primary ray: not "what is
 /// the closest hit?" but "is there any hit at all?". The world answers it
-/// with [`World::any_hit`]: chapter 03's brute-force loop, cut short at the
+/// with [`World::any_hit`]: chapter 3's brute-force loop, cut short at the
 /// first blocker (`ch03::BruteForce`), or whatever faster structure a later
 /// chapter puts behind the same question.
 pub fn occluded(world: &World, ray: &Ray, interval: Interval) -> bool {

@@ -38,7 +38,7 @@
 //! ulps still cover. Where it fails: a coordinate that is near zero only
 //! because the surface passes through the origin (a floor at y = 0) while
 //! the camera is far away, say 1e4: the error of y is then ≈ 1e-12, far
-//! above 2⁻⁴⁵. Chapter 04's acne scene therefore keeps its floor at
+//! above 2⁻⁴⁵. Chapter 4's acne scene therefore keeps its floor at
 //! y = −1; `tests/normal_offset.rs` shows the failure on a plane through
 //! the origin.
 use raystep_core::DVec3;

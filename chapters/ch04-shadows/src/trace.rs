@@ -1,4 +1,4 @@
-//! The chapter 03 tracer with shadows: Sᵢ from a shadow ray per light.
+//! The chapter 3 tracer with shadows: Sᵢ from a shadow ray per light.
 use crate::{Offset, shadow};
 use ch03::{ShadingTerms, World, render_with, shade_with};
 use raystep_core::{DVec3, Ray};

@@ -40,7 +40,7 @@ impl Rng {
     }
 }
 
-/// Chapter 03's shapes for these scene-file shapes.
+/// Chapter 3's shapes for these scene-file shapes.
 fn build(shapes: Vec<SceneShape>) -> Vec<Arc<dyn Shape>> {
     common::world(shapes)
         .objects

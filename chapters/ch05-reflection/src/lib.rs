@@ -1,6 +1,6 @@
-//! # Chapter 05 — reflection
+//! # Chapter 5 — reflection
 //!
-//! The lecture's formula has a term the local model of chapters 03–04
+//! The lecture's formula has a term the local model of chapters 3–4
 //! left out: kr·Lr, the light Lr that arrives along the mirror direction,
 //! scaled by the surface's reflectance kr. Lr is whatever a ray shot in
 //! that direction sees, so the tracer calls itself: a *recursive* ray,

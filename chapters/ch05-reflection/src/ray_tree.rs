@@ -12,7 +12,7 @@ pub struct RayCounts {
     /// Secondary rays, spawned at a hit (here every one is a reflected
     /// ray, R = D − 2(D·N)N).
     pub secondary: u64,
-    /// Shadow rays, from a hit toward a light (chapter 04).
+    /// Shadow rays, from a hit toward a light (chapter 4).
     pub shadow: u64,
     /// Rays not shot because of rule 1 (the maximum depth).
     pub cut_by_depth: u64,

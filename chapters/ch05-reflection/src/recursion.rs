@@ -16,10 +16,10 @@ impl Tracer<'_> {
         let Some((object, hit)) = self.closest_hit(ray, path) else {
             return self.world.background;
         };
-        // Step 2: the local model with shadows (chapters 03–04).
+        // Step 2: the local model with shadows (chapters 3–4).
         let mut colour = self.local_light(ray, &hit, object, path);
         // Step 3: a mirror (kr > 0) adds kr·Lr. The reflected ray leaves
-        // from the side the ray came from, off the surface (chapter 04's
+        // from the side the ray came from, off the surface (chapter 4's
         // offset).
         let kr = self.world.material_of(object).kr;
         if kr == DVec3::ZERO {

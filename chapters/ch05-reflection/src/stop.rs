@@ -52,7 +52,7 @@ pub enum Cut {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Stop {
     /// Rule 1: no ray deeper than this (0: primary rays only, the local
-    /// model of chapter 04).
+    /// model of chapter 4).
     pub max_depth: u32,
     /// Rule 2: no ray whose contribution (largest channel of its weight)
     /// is below this. 0 turns the rule off.
@@ -64,7 +64,7 @@ pub struct Stop {
 /// rule 1 as a safety net this deep.
 pub const SAFETY_DEPTH: u32 = 64;
 
-/// What `raystep render` uses for chapters 05–06: rule 2 at 1/1000, a
+/// What `raystep render` uses for chapters 5–6: rule 2 at 1/1000, a
 /// ray below what an 8-bit pixel can show after the tone curve.
 pub const DEFAULT_STOP: Stop = Stop::contribution(1e-3);
 

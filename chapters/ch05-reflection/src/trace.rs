@@ -68,7 +68,7 @@ impl<'a> Tracer<'a> {
     }
 
     /// Step 2: ka·Ia + Σᵢ Sᵢ·Iᵢ·[kd·(N·Lᵢ) + ks·(Rᵢ·V)^p] at `hit` on
-    /// `object`, seen along `ray`: chapter 04's shading, with Sᵢ from a
+    /// `object`, seen along `ray`: chapter 4's shading, with Sᵢ from a
     /// shadow ray that starts off the surface by the scale-aware offset.
     pub fn local_light(
         &self,
@@ -79,7 +79,7 @@ impl<'a> Tracer<'a> {
     ) -> DVec3 {
         let world = self.world;
         let terms = shade_hit(world, ray, hit, object, |hit, normal, light| {
-            // A light behind the surface needs no ray (chapter 04, step 1).
+            // A light behind the surface needs no ray (chapter 4, step 1).
             if normal.dot(light.position - hit.point) <= 0.0 {
                 return 0.0;
             }

@@ -98,7 +98,7 @@ fn mirror_floor() -> World {
     world_from(MIRROR_FLOOR, "mirror-floor.toml", 32, 18)
 }
 
-/// Depth 0 shoots no reflected ray: every pixel is chapter 04's local
+/// Depth 0 shoots no reflected ray: every pixel is chapter 4's local
 /// colour with shadows (scale-aware offset), and every primary ray that
 /// hits a mirror is counted as cut by depth.
 #[test]
@@ -154,7 +154,7 @@ fn depth_zero_is_the_chapter_04_colour() {
 }
 
 /// Depth 1 adds kr·Lr where a primary ray hits the mirror, Lr being what
-/// the reflected ray sees by chapter 04's local model. The reflected ray is
+/// the reflected ray sees by chapter 4's local model. The reflected ray is
 /// built here from exercise 1's `reflect_ray` (judged by
 /// `tests/reflection.rs`), starting off the surface on the side the ray
 /// came from.

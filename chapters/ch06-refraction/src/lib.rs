@@ -1,4 +1,4 @@
-//! # Chapter 06 — refraction
+//! # Chapter 6 — refraction
 //!
 //! The last term of the lecture's formula, kt·Lt: light that comes
 //! *through* a transparent surface. The transmitted ray bends by Snell's

@@ -7,10 +7,11 @@ pub const MAX_NESTING: usize = 8;
 /// The media around a ray, innermost last: the objects it is inside and
 /// their indices of refraction, over the outside medium.
 ///
-/// The lecture's rule "entering: n₁ outside, n₂ inside; leaving: flip the
-/// normal, swap the indices" assumes the outside is the camera's medium.
-/// An air bubble in water, or a glass ball in a water ball, breaks it:
-/// leaving the bubble the ray enters water, not air. So each ray carries
+/// The lecture's rule "entering: n_θ outside, n_φ inside; leaving: flip
+/// the normal, swap the indices" assumes the outside is the camera's
+/// medium. An air bubble in water, or a glass ball in a water ball, breaks
+/// it: leaving the bubble the ray enters water, not the camera's vacuum
+/// the rule assumes. So each ray carries
 /// the stack of objects it is inside: entering an object pushes it,
 /// leaving pops it, and the index beyond a surface is whatever is on top
 /// afterwards.

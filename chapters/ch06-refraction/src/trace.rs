@@ -73,11 +73,11 @@ impl std::ops::AddAssign for RayCounts {
     }
 }
 
-/// One pixel's trace with refraction: chapter 05's [`ch05::Tracer`] (the
+/// One pixel's trace with refraction: chapter 5's [`ch05::Tracer`] (the
 /// world, the stopping rules, the notebook of rays), the Fresnel split,
 /// and the counts only refraction has.
 pub struct Tracer<'a> {
-    /// Chapter 05's tracer: the closest hit, the local light and the
+    /// Chapter 5's tracer: the closest hit, the local light and the
     /// stopping rules, each ray noted.
     pub rays: ch05::Tracer<'a>,
     /// How light splits between the reflected and the transmitted ray.
@@ -119,7 +119,7 @@ impl<'a> Tracer<'a> {
         RayCounts {
             primary: rays.primary,
             shadow: rays.shadow,
-            // chapter 05 counts every secondary ray; these were not reflected
+            // chapter 5 counts every secondary ray; these were not reflected
             reflected: rays.secondary - transmitted,
             transmitted,
             cut_by_depth: rays.cut_by_depth,
@@ -152,7 +152,7 @@ impl<'a> Tracer<'a> {
         let Some((object, hit)) = self.rays.closest_hit(ray, path) else {
             return world.background;
         };
-        // Step 2: the local model with shadows (chapters 03–04).
+        // Step 2: the local model with shadows (chapters 3–4).
         let mut colour = self.rays.local_light(ray, &hit, object, path);
         let material = world.material_of(object);
         let (kr, kt) = (material.kr, material.kt);

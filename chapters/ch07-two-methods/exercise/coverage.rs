@@ -1,5 +1,5 @@
 //! Exercise 1: does a triangle on screen cover a sample point? Edge
-//! functions (chapter 01's implicit lines, as chapter 02 evaluates them)
+//! functions (chapter 1's implicit lines, as chapter 2 evaluates them)
 //! and a fill rule for points exactly on an edge.
 #![allow(unused_imports)]
 use ch02::{edge_function, owns_boundary};
@@ -11,7 +11,7 @@ use raystep_core::DVec2;
 ///
 /// Inside means on the inner side of all three edges. A point exactly on
 /// an edge (edge function 0) is covered only if the triangle owns that edge
-/// (chapter 02's [`owns_boundary`]): two triangles sharing an edge walk it
+/// (chapter 2's [`owns_boundary`]): two triangles sharing an edge walk it
 /// in opposite directions, so exactly one of them owns it and every sample
 /// on it is drawn once. A triangle of zero area covers nothing.
 pub fn covers(corners: &[DVec2; 3], p: DVec2) -> bool {

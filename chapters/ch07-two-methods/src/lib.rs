@@ -1,4 +1,4 @@
-//! # Chapter 07 — two rendering methods
+//! # Chapter 7 — two rendering methods
 //!
 //! The lecture's two loops, on the same triangles, with the same camera and
 //! the same shading:

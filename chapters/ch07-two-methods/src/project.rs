@@ -1,5 +1,5 @@
 //! The rasterizer's first step: from the world to the screen, with the
-//! same pinhole camera that shoots chapter 03's rays.
+//! same pinhole camera that shoots chapter 3's rays.
 use raystep_core::{Camera, DVec2, DVec3};
 
 // ANCHOR: projection

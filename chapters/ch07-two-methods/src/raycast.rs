@@ -5,7 +5,7 @@ use raystep_core::Interval;
 use crate::{Buffers, Stage, shade_pixel};
 
 // ANCHOR: raycast
-/// Chapter 03's brute-force loop on the stage's world: every pixel's ray
+/// Chapter 3's brute-force loop on the stage's world: every pixel's ray
 /// is tested against every polygon. One thread, like [`crate::rasterize`],
 /// so that the two loops compare.
 pub fn raycast(stage: &Stage) -> Buffers {

@@ -1,4 +1,4 @@
-//! The scene both methods draw: chapter 03's world, whose objects are all
+//! The scene both methods draw: chapter 3's world, whose objects are all
 //! polygons, and those polygons as triangles for the rasterizer.
 use std::sync::Arc;
 
@@ -28,7 +28,7 @@ pub enum StageError {
     World(#[from] ch03::WorldError),
     /// An object is not a polygon: a rasterizer draws triangles only.
     #[error(
-        "{file}: objects[{index}] is a {kind}: chapter 07 rasterizes polygons only; write it as polygons, or render it with a ray tracer (--chapter 06)"
+        "{file}: objects[{index}] is a {kind}: chapter 7 rasterizes polygons only; write it as polygons, or render it with a ray tracer (--chapter 6)"
     )]
     NotAPolygon {
         /// The scene file.
@@ -43,7 +43,7 @@ pub enum StageError {
 /// The world and its triangles.
 #[derive(Clone, Debug)]
 pub struct Stage {
-    /// Chapter 03's world: camera, lights, materials, and the polygons the
+    /// Chapter 3's world: camera, lights, materials, and the polygons the
     /// ray caster intersects.
     pub world: World,
     /// The same polygons cut into triangles (fans from the first corner),

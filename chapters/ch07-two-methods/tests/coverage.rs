@@ -5,7 +5,7 @@
 //! Most corners here lie on pixel centres or on whole numbers, so edges
 //! pass *exactly* through pixel centres and every edge function is exact
 //! (small multiples of ¼), whatever the order of operations: the fill rule,
-//! not rounding, decides those pixels. The rule (chapter 02's
+//! not rounding, decides those pixels. The rule (chapter 2's
 //! `owns_boundary`) gives a triangle the edges whose inside lies to their
 //! right (+x), or below them (+y, down on screen) when they are
 //! horizontal: on screen, its left and top edges.

@@ -14,12 +14,15 @@
 //!    fold, never in the open.
 //! 3. **Math.** `$…$` in running text and `$$…$$` on lines of their own are
 //!    LaTeX, typeset as MathML ([`math`]).
+//! 4. **Numbers.** `3.7 %`, `160 × 90` and `39 171` are never split at a
+//!    line end ([`typography`]).
 //!
 //! Every error names the page and line.
 
 mod error;
 pub mod include;
 pub mod math;
+pub mod typography;
 
 use std::path::Path;
 

@@ -44,12 +44,13 @@ pub fn display(latex: &str) -> Result<String, String> {
 }
 
 /// A line of running text with its `$…$` formulas as MathML. Code spans
-/// (`` `…` ``) are left alone and `\$` stays a dollar sign.
+/// (`` `…` ``) are left alone and `\$` stays a dollar sign; the rest keeps
+/// its numbers in one piece ([`crate::typography`]).
 pub fn inline(line: &str) -> Result<String, String> {
     let mut out = String::with_capacity(line.len());
     let mut rest = line;
     while let Some(at) = rest.find(['$', '`', '\\']) {
-        out.push_str(&rest[..at]);
+        out.push_str(&crate::typography::tie_numbers(&rest[..at]));
         let tail = &rest[at..];
         if let Some(escaped) = tail.strip_prefix('\\') {
             // A backslash escapes the next character, as in Markdown.
@@ -90,7 +91,7 @@ pub fn inline(line: &str) -> Result<String, String> {
             rest = &after[post.len()..];
         }
     }
-    out.push_str(rest);
+    out.push_str(&crate::typography::tie_numbers(rest));
     Ok(out)
 }
 

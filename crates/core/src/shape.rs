@@ -1,6 +1,6 @@
 use crate::{Aabb, Hit, Interval, Ray};
 
-/// A surface a tracer can hit: chapter 03's sphere, chapter 02's polygon
+/// A surface a tracer can hit: chapter 3's sphere, chapter 2's polygon
 /// and plane, and every primitive a later chapter adds.
 ///
 /// Each chapter implements it for the shapes it teaches, with the

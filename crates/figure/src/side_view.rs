@@ -51,7 +51,7 @@ impl SideView {
 
 /// Where `camera` puts the point `p` on a `width × height` image: pixel
 /// coordinates from the top-left corner (x right, y down), to place labels
-/// on a render. (Chapter 07 derives the same projection step by step for
+/// on a render. (Chapter 7 derives the same projection step by step for
 /// its rasterizer.)
 pub fn camera_pixel(
     camera: &raystep_core::Camera,

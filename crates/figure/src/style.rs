@@ -110,7 +110,7 @@ pub mod palette {
     pub const NOTE: Color = Color::rgb(85, 85, 85);
 
     /// What the colours mean in every chapter's figures, so that a normal
-    /// or a shadow ray looks the same from chapter 01 to chapter 10.
+    /// or a shadow ray looks the same from chapter 1 to chapter 10.
     pub mod role {
         use super::*;
 

@@ -70,7 +70,7 @@ pub struct Run {
 }
 
 /// The default of `--timeout`, in seconds. The slowest test binaries of the
-/// reference solutions (chapter 07's unit tests and `tests/agreement.rs`, a
+/// reference solutions (chapter 7's unit tests and `tests/agreement.rs`, a
 /// debug build) take under a second on two cores; a minute leaves a wide
 /// margin for a slow machine and a slow but correct student solution, and
 /// still ends an endless loop in reasonable time.

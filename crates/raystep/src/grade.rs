@@ -504,7 +504,7 @@ fn summary(chapter: &Chapter, exercises: &[String], rows: &[Row]) -> String {
     text
 }
 
-/// Chapter 07's tests read `../shared/meshes` beside the workspace: the
+/// Chapter 7's tests read `../shared/meshes` beside the workspace: the
 /// scratch workspace gets a link to the instructor's, if there is one.
 fn link_shared(root: &Path, scratch: &Path) {
     let shared = root.join("..").join("shared");

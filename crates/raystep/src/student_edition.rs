@@ -6,8 +6,8 @@
 //! stub `exercise/<e>.rs`, so the crates build, the book's listings show
 //! the stubs, and `raystep check` works as in the instructor's workspace.
 //! With no reference left, a chapter's `exercise` feature also turns on
-//! the `exercise` feature of the chapters it builds on: chapter 02's tests
-//! then run on the student's own chapter 01.
+//! the `exercise` feature of the chapters it builds on: chapter 2's tests
+//! then run on the student's own chapter 1.
 //!
 //! The copy is made in a temporary folder beside OUT and renamed to OUT
 //! when complete, so OUT is never left half written.

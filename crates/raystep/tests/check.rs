@@ -189,7 +189,7 @@ fn write(path: &Path, text: &str) {
     }
 }
 
-/// A throwaway workspace shaped like the real one: chapter 01 with the same
+/// A throwaway workspace shaped like the real one: chapter 1 with the same
 /// package and exercise names, where the stub of `line_through_points`
 /// loops forever and the one of `plane_through_points` is right.
 fn looping_workspace() -> PathBuf {

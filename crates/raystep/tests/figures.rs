@@ -52,7 +52,7 @@ fn files(dir: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
 
 /// Writes every figure (of `chapter`, if given) into a scratch folder;
 /// returns the folder. Only one test draws every chapter: the others test
-/// the command on chapter 01's few figures.
+/// the command on chapter 1's few figures.
 fn write_all(name: &str, chapter: Option<&str>) -> PathBuf {
     let dir = scratch(name);
     let mut args = vec!["figures", "--out", dir.to_str().unwrap()];

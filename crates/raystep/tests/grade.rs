@@ -1,4 +1,4 @@
-//! `raystep grade` end to end on chapter 01 (the smallest): five fake
+//! `raystep grade` end to end on chapter 1 (the smallest): five fake
 //! submissions, each gets its verdicts, and the instructor's workspace is
 //! left as it was.
 //!
@@ -24,7 +24,7 @@ fn outer_target() -> PathBuf {
         .to_path_buf()
 }
 
-/// The reference module `src/<exercise>.rs` of chapter 01.
+/// The reference module `src/<exercise>.rs` of chapter 1.
 fn reference(exercise: &str) -> String {
     fs::read_to_string(workspace().join(format!("{CHAPTER}/src/{exercise}.rs")))
         .unwrap()

@@ -57,7 +57,7 @@ fn renders_a_chapter_scene_at_the_asked_size() {
     );
     assert_eq!(png_size(&fs::read(&out).unwrap()), (64, 36));
     assert!(String::from_utf8_lossy(&run.stdout).contains("ch03 renderer"));
-    // chapter 04's scene gets chapter 04's tracer (with shadows)
+    // chapter 4's scene gets chapter 4's tracer (with shadows)
     let out4 = dir.join("two.png");
     let run = raystep(&[
         "render",
@@ -69,7 +69,7 @@ fn renders_a_chapter_scene_at_the_asked_size() {
     ]);
     assert!(run.status.success());
     assert!(String::from_utf8_lossy(&run.stdout).contains("ch04 renderer"));
-    // chapters 05 and 06: the recursive tracers, each for its own scenes
+    // chapters 5 and 06: the recursive tracers, each for its own scenes
     for (file, renderer) in [
         ("ch05-reflection/scenes/mirrors.toml", "ch05 renderer"),
         ("ch06-refraction/scenes/bubble.toml", "ch06 renderer"),
@@ -122,7 +122,7 @@ fn a_bad_scene_is_one_error_line_and_no_file() {
     }
 }
 
-/// Chapter 07's scenes are rasterized; a scene with a sphere cannot be,
+/// Chapter 7's scenes are rasterized; a scene with a sphere cannot be,
 /// and the error names the file and the object.
 #[test]
 fn chapter_07_rasterizes_polygons_only() {

@@ -271,7 +271,7 @@ fn no_reference_body_is_in_the_export() {
 }
 
 /// A later chapter's `exercise` feature turns on the earlier chapter's, so
-/// chapter 02's tests run on the student's chapter 01.
+/// chapter 2's tests run on the student's chapter 1.
 #[test]
 fn exercise_features_chain_through_the_chapters() {
     let manifest = fs::read_to_string(

@@ -1,4 +1,4 @@
-//! Scene files for chapters 03–06 of the raystep lecture: read, checked, and
+//! Scene files for chapters 3–6 of the raystep lecture: read, checked, and
 //! handed over as plain data.
 //!
 //! A scene is a TOML file. [`load`] (or [`parse`], for a string) reads it
@@ -186,7 +186,7 @@ pub struct Light {
 }
 
 /// A named material: the Phong coefficients, plus reflection and refraction
-/// for chapters 05 and 06. Every colour component is `≥ 0`.
+/// for chapters 5 and 06. Every colour component is `≥ 0`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
     /// Its name in the file (the key after `materials.`).
@@ -199,11 +199,11 @@ pub struct Material {
     pub ks: DVec3,
     /// Phong exponent, `> 0`.
     pub p: f64,
-    /// Reflected fraction `kr` (chapter 05).
+    /// Reflected fraction `kr` (chapter 5).
     pub kr: DVec3,
-    /// Transmitted fraction `kt` (chapter 06).
+    /// Transmitted fraction `kt` (chapter 6).
     pub kt: DVec3,
-    /// Index of refraction, `> 0` (chapter 06).
+    /// Index of refraction, `> 0` (chapter 6).
     pub ior: f64,
     /// An optional checkerboard: every other cube of the pattern uses the
     /// checker's `ka` and `kd` instead of the material's.

@@ -1,4 +1,4 @@
-//! Triangle meshes: what a rasterizer draws, and (from chapter 08 on) what
+//! Triangle meshes: what a rasterizer draws, and (from chapter 8 on) what
 //! a ray tracer speeds up. Spheres become subdivided icosahedra; the
 //! Stanford bunny comes from an OBJ file.
 use std::collections::HashMap;

@@ -6,9 +6,9 @@ use crate::Object;
 /// The one seam between a collection of objects and a tracer: the two
 /// questions every tracer asks of the objects of a world.
 ///
-/// Chapter 03's brute-force loop (`ch03::BruteForce`: "for each object,
+/// Chapter 3's brute-force loop (`ch03::BruteForce`: "for each object,
 /// does the ray hit it? keep the closest") is the first implementation;
-/// chapters 08–10 add a bounding volume hierarchy, a grid and a kd-tree
+/// chapters 8–10 add a bounding volume hierarchy, a grid and a kd-tree
 /// behind the same two methods. A tracer asks [`World::closest_hit`] and
 /// [`World::any_hit`](crate::World::any_hit) and never knows which one
 /// answers, so every chapter's tracer runs on every accelerator unchanged.

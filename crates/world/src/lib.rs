@@ -5,7 +5,7 @@
 //! A [`World`] is built from a scene file ([`raystep_scene::Scene`]) by a
 //! chapter: the chapter turns each shape of the file into a surface it has
 //! taught (a [`Shape`]) and chooses how the objects are searched
-//! (`ch03::world` builds chapter 03's shapes and its brute-force loop).
+//! (`ch03::world` builds chapter 3's shapes and its brute-force loop).
 //! Everything a tracer does with the objects goes through
 //! [`World::closest_hit`] and [`World::any_hit`].
 #![deny(missing_docs)]

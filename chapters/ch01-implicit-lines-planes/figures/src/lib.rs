@@ -1,11 +1,11 @@
-//! Chapter 01 — implicit lines and planes: the lecture's figures, drawn
+//! Chapter 1 — implicit lines and planes: the lecture's figures, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
 mod diagrams;
 
 use raystep_figure::Chapter;
 
-/// What chapter 01 hands `raystep figures`, `measure`, `render` and `check`.
+/// What chapter 1 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter = Chapter {
     id: "ch01",
     title: "Implicit lines and planes",

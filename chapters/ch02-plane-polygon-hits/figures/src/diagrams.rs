@@ -300,7 +300,7 @@ fn inside_test() -> Figure {
         page.label_sized(
             r,
             &format!("f_{}(R) = {}", i + 1, signed(fr, 5)),
-            Anchor::S,
+            Anchor::SE,
             16.0,
             OUTSIDE_COLOR,
         );

@@ -1,11 +1,11 @@
-//! Chapter 02 — plane and polygon hits: the lecture's figures, drawn
+//! Chapter 2 — plane and polygon hits: the lecture's figures, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
 mod diagrams;
 
 use raystep_figure::Chapter;
 
-/// What chapter 02 hands `raystep figures`, `measure`, `render` and `check`.
+/// What chapter 2 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter = Chapter {
     id: "ch02",
     title: "Plane and polygon hits",

@@ -1,4 +1,4 @@
-//! Draws chapter 02's lecture figures: `cargo run -p ch02-figures -- --out DIR`.
+//! Draws chapter 2's lecture figures: `cargo run -p ch02-figures -- --out DIR`.
 fn main() -> std::process::ExitCode {
     raystep_figure::diagram_main(&ch02_figures::CHAPTER)
 }

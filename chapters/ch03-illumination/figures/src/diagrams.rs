@@ -266,7 +266,7 @@ fn vectors() -> Figure {
 
 /// The refracted direction of unit `d` entering a medium of index `n` through a surface with
 /// unit normal `normal` (against `d`), by Snell's law; `None` for total internal reflection.
-/// Chapter 06 teaches it.
+/// Chapter 6 teaches it.
 fn refract(d: DVec3, normal: DVec3, n: f64) -> Option<DVec3> {
     let eta = 1.0 / n;
     let cos_i = -d.dot(normal);
@@ -429,7 +429,7 @@ fn other_rays() -> Figure {
 
     Figure::new(
         "other-rays",
-        "The other rays at one point P where a primary ray of the chapter's scene meets the floor. Left: the reflected ray (chapter 05) and the ray refracted into glass of n = 1.5 (chapter 06) lie in the plane of the primary ray and N. Right: a shadow ray to each light (chapter 04), each drawn in its own vertical plane; the blue sphere blocks the second.",
+        "The other rays at one point P where a primary ray of the chapter's scene meets the floor. Left: the reflected ray (chapter 5) and the ray refracted into glass of n = 1.5 (chapter 6) lie in the plane of the primary ray and N. Right: a shadow ray to each light (chapter 4), each drawn in its own vertical plane; the blue sphere blocks the second.",
         page,
     )
 }

@@ -1,4 +1,4 @@
-//! Chapter 03 — illumination: the lecture's figures, drawn
+//! Chapter 3 — illumination: the lecture's figures, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
 mod diagrams;
@@ -7,7 +7,7 @@ use raystep_figure::Chapter;
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
 
-/// What chapter 03 hands `raystep figures`, `measure`, `render` and `check`.
+/// What chapter 3 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter = Chapter {
     id: "ch03",
     title: "Illumination",
@@ -19,7 +19,7 @@ pub const CHAPTER: Chapter = Chapter {
     renderer: Some(render),
 };
 
-/// `raystep render` with chapter 03's tracer: the local model, every light
+/// `raystep render` with chapter 3's tracer: the local model, every light
 /// visible.
 fn render(
     scene: &Scene,

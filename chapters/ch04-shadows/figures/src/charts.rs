@@ -1,4 +1,4 @@
-//! The chart of chapter 04: wrong pixels against scene scale and against
+//! The chart of chapter 4: wrong pixels against scene scale and against
 //! render time, drawn from `book/src/figures/ch04/acne.csv` (written by
 //! `raystep measure`).
 use raystep_figure::numbers::power;

@@ -158,7 +158,12 @@ fn shadow_rays() -> Figure {
                 Some(role::BLOCKED),
                 Some(&Stroke::new(palette::BLACK).width(1.0)),
             );
-            page.label(at, "blocker hit", Anchor::W);
+            // under the ball, clear of its outline and of the ray
+            page.label(
+                DVec2::new(at.x + 0.1, centre.y - radius - 0.05),
+                "blocker hit",
+                Anchor::SE,
+            );
             page.label_sized(
                 v2(point) + 0.42 * (at - v2(point)),
                 &label,

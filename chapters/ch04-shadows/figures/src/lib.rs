@@ -1,4 +1,4 @@
-//! Chapter 04 — shadows: the lecture's figures, charts and measurements, drawn
+//! Chapter 4 — shadows: the lecture's figures, charts and measurements, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
 mod charts;
@@ -10,7 +10,7 @@ use raystep_render::csv::to_csv;
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
 
-/// What chapter 04 hands `raystep figures`, `measure`, `render` and `check`.
+/// What chapter 4 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter = Chapter {
     id: "ch04",
     title: "Shadows",
@@ -32,7 +32,7 @@ pub const CHAPTER: Chapter = Chapter {
     renderer: Some(render),
 };
 
-/// `raystep render` with chapter 04's tracer: shadow rays, with the
+/// `raystep render` with chapter 4's tracer: shadow rays, with the
 /// scale-aware offset against acne.
 fn render(
     scene: &Scene,

@@ -1,4 +1,4 @@
-//! Draws chapter 04's lecture figures: `cargo run -p ch04-figures -- --out DIR`.
+//! Draws chapter 4's lecture figures: `cargo run -p ch04-figures -- --out DIR`.
 fn main() -> std::process::ExitCode {
     raystep_figure::diagram_main(&ch04_figures::CHAPTER)
 }

@@ -1,4 +1,4 @@
-//! The data behind chapter 04's chart: for each strategy and scene scale,
+//! The data behind chapter 4's chart: for each strategy and scene scale,
 //! how many pixels it gets wrong (computed, the same on every machine) and
 //! how long a render takes (measured, on this machine).
 //!

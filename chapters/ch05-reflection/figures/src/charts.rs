@@ -1,4 +1,4 @@
-//! The chart of chapter 05: the error each stopping rule leaves (RMSE and
+//! The chart of chapter 5: the error each stopping rule leaves (RMSE and
 //! max error) against the time its render takes, on each mirror scene; drawn from `book/src/figures/ch05/stopping.csv` (written by
 //! `raystep measure`).
 use raystep_figure::numbers::power;

@@ -501,7 +501,7 @@ fn depths() -> Figure {
             palette::BLACK,
         );
         let note = match depth {
-            0 => "no reflected rays: chapter 04".to_string(),
+            0 => "no reflected rays: chapter 4".to_string(),
             _ if error.max == 0.0 => "the same as the whole tree".to_string(),
             _ => format!(
                 "RMSE {}, max {} levels",

@@ -1,4 +1,4 @@
-//! Chapter 05 — reflection: the lecture's figures, charts and measurements, drawn
+//! Chapter 5 — reflection: the lecture's figures, charts and measurements, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
 mod charts;
@@ -10,7 +10,7 @@ use raystep_render::csv::to_csv;
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
 
-/// What chapter 05 hands `raystep figures`, `measure`, `render` and `check`.
+/// What chapter 5 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter = Chapter {
     id: "ch05",
     title: "Reflection",
@@ -29,7 +29,7 @@ pub const CHAPTER: Chapter = Chapter {
     renderer: Some(render),
 };
 
-/// `raystep render` with chapter 05's tracer: recursive reflected rays,
+/// `raystep render` with chapter 5's tracer: recursive reflected rays,
 /// stopped by contribution.
 fn render(
     scene: &Scene,

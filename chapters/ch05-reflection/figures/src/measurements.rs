@@ -1,4 +1,4 @@
-//! The data behind chapter 05's chart: for each stopping rule on each
+//! The data behind chapter 5's chart: for each stopping rule on each
 //! mirror scene, how far its image is from a deep reference and how many
 //! rays it spends (computed, the same on every machine), and how long a
 //! render takes (measured, on this machine).

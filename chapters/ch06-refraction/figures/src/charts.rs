@@ -1,4 +1,4 @@
-//! The chart of chapter 06: how far Schlick's approximation and no Fresnel
+//! The chart of chapter 6: how far Schlick's approximation and no Fresnel
 //! split at all are from the exact Fresnel split, material by material,
 //! against what they cost in render time and per call; drawn from
 //! `book/src/figures/ch06/fresnel.csv` (written by `raystep measure`).

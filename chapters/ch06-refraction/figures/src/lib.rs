@@ -1,4 +1,4 @@
-//! Chapter 06 — refraction: the lecture's figures, charts and measurements, drawn
+//! Chapter 6 — refraction: the lecture's figures, charts and measurements, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
 mod charts;
@@ -10,7 +10,7 @@ use raystep_render::csv::to_csv;
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
 
-/// What chapter 06 hands `raystep figures`, `measure`, `render` and `check`.
+/// What chapter 6 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter = Chapter {
     id: "ch06",
     title: "Refraction",
@@ -29,7 +29,7 @@ pub const CHAPTER: Chapter = Chapter {
     renderer: Some(render),
 };
 
-/// `raystep render` with chapter 06's tracer: reflection and refraction,
+/// `raystep render` with chapter 6's tracer: reflection and refraction,
 /// split by the exact Fresnel equations.
 fn render(
     scene: &Scene,

@@ -1,4 +1,4 @@
-//! The data behind chapter 06's chart: for each material of the lecture's
+//! The data behind chapter 6's chart: for each material of the lecture's
 //! table, one ball rendered with the exact Fresnel split, with Schlick's
 //! approximation and with no split at all; how far the last two are from
 //! the first and how many rays each shoots (computed, the same on every

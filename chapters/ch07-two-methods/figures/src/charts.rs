@@ -1,4 +1,4 @@
-//! The chart of chapter 07: the time each method takes to draw the same
+//! The chart of chapter 7: the time each method takes to draw the same
 //! scene against its number of triangles, on log–log axes, with each
 //! method's fitted growth; drawn from `book/src/figures/ch07/scaling.csv`
 //! (written by `raystep measure`).

@@ -1,8 +1,8 @@
-//! Chapter 07's lecture figures, drawn from the chapter's own code.
+//! Chapter 7's lecture figures, drawn from the chapter's own code.
 //!
 //! Every verdict and number shown comes from the chapter's code: which
 //! pixel centres a triangle covers and who owns a shared edge from
-//! [`covers`] and chapter 02's [`edge_function`] and [`owns_boundary`]; the
+//! [`covers`] and chapter 2's [`edge_function`] and [`owns_boundary`]; the
 //! order in which the rasterizer visits pixels, its z tests and its counts
 //! from the pieces of [`rasterize`] (checked against [`rasterize`] itself);
 //! each ray's tests from the world's polygons (checked against
@@ -19,12 +19,12 @@ use ch07::{
     compare, covers, perspective_depth, rasterize, raycast, shapes,
 };
 
-/// Every figure of chapter 07, in the order the lecture shows them.
+/// Every figure of chapter 7, in the order the lecture shows them.
 pub fn all() -> Vec<Figure> {
     vec![loops(), coverage(), depth(), agreement()]
 }
 
-/// One colour per triangle (as chapter 02 colours its polygons).
+/// One colour per triangle (as chapter 2 colours its polygons).
 const TRIANGLE_COLORS: [Color; 3] =
     [palette::SKY_BLUE, palette::ORANGE, palette::GREEN];
 /// The ids' colours in the id images (not vermilion: that marks a
@@ -760,7 +760,7 @@ fn coverage() -> Figure {
     Figure::new(
         "coverage",
         &format!(
-            "Two triangles on a {w} × {h} pixel grid share the edge S–E, which passes exactly through {} pixel centres. covers tests each centre against a triangle's three edge functions (the arrows point to their positive sides); a centre exactly on an edge (f = 0) is drawn only by the triangle that owns that edge, chapter 02's owns_boundary: B, whose inward normal there points to +x. Large dots: the centres on the shared edge, all drawn by B; small dots: the other covered centres, in their triangle's colour.",
+            "Two triangles on a {w} × {h} pixel grid share the edge S–E, which passes exactly through {} pixel centres. covers tests each centre against a triangle's three edge functions (the arrows point to their positive sides); a centre exactly on an edge (f = 0) is drawn only by the triangle that owns that edge, chapter 2's owns_boundary: B, whose inward normal there points to +x. Large dots: the centres on the shared edge, all drawn by B; small dots: the other covered centres, in their triangle's colour.",
             on_edge.len()
         ),
         page,
@@ -1181,7 +1181,7 @@ fn agreement() -> Figure {
     Figure::new(
         "agreement",
         &format!(
-            "Top: the shapes scene at {w} × {h}, rasterized and ray-cast. The id buffers agree on all {} pixels ({} differ), and the colours differ by at most {} (linear units: rounding), which changes no 8-bit pixel ({bytes_differ} differ); the difference image is magnified so that the largest difference is black. Bottom: a fan of {} triangles at {fw} × {fh} whose every edge runs exactly through pixel centres: there the two sampling rules meet, and {} of the {} pixels differ (red), every one within {} pixel of an edge: the rasterizer decides a centre on an edge with its fill rule on the screen, the ray caster with chapter 02's rule in the triangle's own plane, after rounding.",
+            "Top: the shapes scene at {w} × {h}, rasterized and ray-cast. The id buffers agree on all {} pixels ({} differ), and the colours differ by at most {} (linear units: rounding), which changes no 8-bit pixel ({bytes_differ} differ); the difference image is magnified so that the largest difference is black. Bottom: a fan of {} triangles at {fw} × {fh} whose every edge runs exactly through pixel centres: there the two sampling rules meet, and {} of the {} pixels differ (red), every one within {} pixel of an edge: the rasterizer decides a centre on an edge with its fill rule on the screen, the ray caster with chapter 2's rule in the triangle's own plane, after rounding.",
             grouped(u64::from(w * h)),
             shapes_agree.differing(),
             scientific(largest, false),

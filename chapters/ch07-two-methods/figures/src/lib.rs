@@ -1,4 +1,4 @@
-//! Chapter 07 — two rendering methods: the lecture's figures, charts and measurements, drawn
+//! Chapter 7 — two rendering methods: the lecture's figures, charts and measurements, drawn
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
 mod charts;
@@ -10,7 +10,7 @@ use raystep_render::csv::to_csv;
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
 
-/// What chapter 07 hands `raystep figures`, `measure`, `render` and `check`.
+/// What chapter 7 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter = Chapter {
     id: "ch07",
     title: "Two rendering methods",
@@ -29,7 +29,7 @@ pub const CHAPTER: Chapter = Chapter {
     renderer: Some(render),
 };
 
-/// `raystep render` with chapter 07's rasterizer and z-buffer (polygons
+/// `raystep render` with chapter 7's rasterizer and z-buffer (polygons
 /// only, one thread).
 fn render(
     scene: &Scene,

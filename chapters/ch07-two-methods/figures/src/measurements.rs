@@ -1,4 +1,4 @@
-//! The data behind chapter 07's chart: how long each method takes to draw
+//! The data behind chapter 7's chart: how long each method takes to draw
 //! the same scene as its number of triangles grows (measured, on this
 //! machine), and how much work each did (counted, the same on every
 //! machine).
