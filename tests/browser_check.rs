@@ -22,16 +22,14 @@
 //! `--screenshots DIR` also saves each page as a full-page PNG.
 //! Chromium is `$CHROME`, else `/usr/bin/chromium` (Debian's package).
 
-use std::ffi::OsStr;
-use std::fmt::Write as _;
+mod devtools;
+
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::sync::{Arc, Mutex};
-use std::time::Duration;
 
-use headless_chrome::protocol::cdp::{Log, Page, Runtime};
-use headless_chrome::{Browser, LaunchOptions, Tab};
+use devtools::{Chromium, Tab};
 use serde::Deserialize;
+use serde_json::{Value, json};
 
 /// The window a reader has: wide enough for the sidebar and a full column.
 const WINDOW: (u32, u32) = (1280, 900);
@@ -102,27 +100,15 @@ fn run() -> Result<bool, String> {
         ));
     }
     // No connections out of this machine: the book must need none.
-    let flags: Vec<&OsStr> = [
+    let flags = [
         "--disable-background-networking",
         "--disable-component-update",
         "--disable-sync",
         "--disable-quic",
         "--no-first-run",
         "--hide-scrollbars",
-    ]
-    .iter()
-    .map(OsStr::new)
-    .collect();
-    let browser = Browser::new(LaunchOptions {
-        headless: true,
-        sandbox: false,
-        window_size: Some(WINDOW),
-        path: Some(chrome),
-        args: flags,
-        idle_browser_timeout: Duration::from_secs(120),
-        ..LaunchOptions::default()
-    })
-    .map_err(|e| format!("cannot start Chromium: {e}"))?;
+    ];
+    let mut browser = Chromium::start(&chrome, WINDOW, &flags)?;
 
     let mut failures = 0;
     println!(
@@ -130,12 +116,13 @@ fn run() -> Result<bool, String> {
         "page", "images", "math", "solutions", "min text"
     );
     for page in &pages {
-        let tab = browser.new_tab().map_err(|e| e.to_string())?;
-        let seen = visit(&tab, &book, page)?;
+        let tab = browser.open_tab()?;
+        let seen = visit(&mut browser, &tab, &book, page)?;
         if let Some(dir) = &args.screenshots {
-            screenshot(&tab, &seen, &dir.join(page.with_extension("png")))?;
+            let path = dir.join(page.with_extension("png"));
+            screenshot(&mut browser, &tab, &seen, &path)?;
         }
-        let _ = tab.close(false);
+        browser.close_tab(tab)?;
         let problems = problems(&book, &seen);
         let min_text = seen
             .figures(&book)
@@ -213,6 +200,7 @@ struct Seen {
     open_solutions: usize,
     code_blocks: usize,
     height: f64,
+    width: f64,
 }
 
 #[derive(Debug, Deserialize)]
@@ -265,6 +253,13 @@ fn smallest_text(svg: &Path) -> Option<f64> {
 /// What a page must not show (see the module documentation).
 fn problems(book: &Path, seen: &Seen) -> Vec<String> {
     let mut found: Vec<String> = seen.console.clone();
+    if seen.width != f64::from(WINDOW.0) {
+        found.push(format!(
+            "the window is {} px wide, not {} (are the sizes measured at \
+             another width?)",
+            seen.width, WINDOW.0
+        ));
+    }
     for image in &seen.images {
         if !image.loaded {
             found.push(format!("image did not load: {}", image.src));
@@ -358,110 +353,109 @@ const INSPECT: &str = r#"
     openSolutions: main.querySelectorAll('details.solution[open]').length,
     codeBlocks: main.querySelectorAll('pre code').length,
     height: document.documentElement.scrollHeight,
+    width: window.innerWidth,
   });
 })()
 "#;
 
 /// Opens one page and collects what it shows and what its console says.
-fn visit(tab: &Arc<Tab>, book: &Path, page: &Path) -> Result<Seen, String> {
-    let console: Arc<Mutex<Vec<String>>> = Arc::default();
-    let sink = Arc::clone(&console);
-    tab.add_event_listener(Arc::new(
-        move |event: &headless_chrome::protocol::cdp::types::Event| {
-            use headless_chrome::protocol::cdp::types::Event;
-            let message = match event {
-                Event::LogEntryAdded(e)
-                    if e.params.entry.level == Log::LogEntryLevel::Error =>
-                {
-                    let entry = &e.params.entry;
-                    Some(format!(
-                        "console: {}{}",
-                        entry.text,
-                        entry
-                            .url
-                            .as_ref()
-                            .map(|u| format!(" ({u})"))
-                            .unwrap_or_default()
-                    ))
-                }
-                Event::RuntimeExceptionThrown(e) => Some(format!(
-                    "script error: {}",
-                    e.params.exception_details.text
-                )),
-                Event::RuntimeConsoleAPICalled(e)
-                    if matches!(
-                        e.params.Type,
-                        Runtime::ConsoleAPICalledEventTypeOption::Error
-                            | Runtime::ConsoleAPICalledEventTypeOption::Assert
-                    ) =>
-                {
-                    Some(format!(
-                        "console.error: {:?}",
-                        e.params.args.first().and_then(|a| a.value.clone())
-                    ))
-                }
-                _ => None,
-            };
-            if let Some(message) = message {
-                let mut seen = sink.lock().unwrap();
-                if !seen.contains(&message) {
-                    seen.push(message);
-                }
-            }
-        },
-    ))
-    .map_err(|e| e.to_string())?;
-    tab.enable_log().map_err(|e| e.to_string())?;
-    tab.enable_runtime().map_err(|e| e.to_string())?;
-
+fn visit(
+    browser: &mut Chromium,
+    tab: &Tab,
+    book: &Path,
+    page: &Path,
+) -> Result<Seen, String> {
+    let at = |e: String| format!("{}: {e}", page.display());
+    for domain in ["Log", "Runtime", "Page"] {
+        browser.call(Some(tab), &format!("{domain}.enable"), json!({}))?;
+    }
     let url = format!("file://{}", book.join(page).display());
-    tab.navigate_to(&url)
-        .and_then(|t| t.wait_until_navigated())
-        .map_err(|e| format!("{}: {e}", page.display()))?;
-    let result = tab
-        .evaluate(INSPECT, true)
-        .map_err(|e| format!("{}: {e}", page.display()))?;
-    let json =
-        result
-            .value
-            .as_ref()
-            .and_then(|v| v.as_str())
-            .ok_or_else(|| {
-                format!("{}: the page did not answer", page.display())
-            })?;
-    let mut seen: Seen = serde_json::from_str(json)
-        .map_err(|e| format!("{}: {e}", page.display()))?;
-    // Events may still be on their way.
-    std::thread::sleep(Duration::from_millis(100));
+    let navigated =
+        browser.call(Some(tab), "Page.navigate", json!({ "url": url }))?;
+    if let Some(error) = navigated["errorText"].as_str() {
+        return Err(at(format!("cannot open: {error}")));
+    }
+    browser.wait_for(tab, "Page.loadEventFired").map_err(at)?;
+    let answer = browser.evaluate(tab, INSPECT).map_err(at)?;
+    let json = answer
+        .as_str()
+        .ok_or_else(|| at("the page did not answer".into()))?;
+    let mut seen: Seen =
+        serde_json::from_str(json).map_err(|e| at(e.to_string()))?;
+    // A round trip, so that events sent before it have arrived.
+    browser.call(
+        Some(tab),
+        "Runtime.evaluate",
+        json!({ "expression": "0" }),
+    )?;
     seen.page = page.to_path_buf();
-    seen.console = console.lock().unwrap().clone();
+    for event in browser.take_events(tab) {
+        if let Some(message) = console_error(&event)
+            && !seen.console.contains(&message)
+        {
+            seen.console.push(message);
+        }
+    }
     Ok(seen)
 }
 
+/// What a console event says, if it is an error.
+fn console_error(event: &Value) -> Option<String> {
+    let params = &event["params"];
+    match event["method"].as_str()? {
+        "Log.entryAdded" if params["entry"]["level"] == "error" => {
+            let entry = &params["entry"];
+            let url = entry["url"]
+                .as_str()
+                .map(|u| format!(" ({u})"))
+                .unwrap_or_default();
+            Some(format!("console: {}{url}", entry["text"].as_str()?))
+        }
+        "Runtime.exceptionThrown" => {
+            let details = &params["exceptionDetails"];
+            let text = details["exception"]["description"]
+                .as_str()
+                .or(details["text"].as_str())?;
+            let first_line = text.lines().next().unwrap_or(text);
+            Some(format!("script error: {first_line}"))
+        }
+        "Runtime.consoleAPICalled"
+            if matches!(params["type"].as_str(), Some("error" | "assert")) =>
+        {
+            let first = &params["args"][0];
+            let text = first["value"]
+                .as_str()
+                .map(str::to_string)
+                .unwrap_or_else(|| first["description"].to_string());
+            Some(format!("console.error: {text}"))
+        }
+        _ => None,
+    }
+}
+
 /// The whole page as a PNG.
-fn screenshot(tab: &Arc<Tab>, seen: &Seen, path: &Path) -> Result<(), String> {
-    let data = tab
-        .call_method(Page::CaptureScreenshot {
-            format: Some(Page::CaptureScreenshotFormatOption::Png),
-            quality: None,
-            clip: Some(Page::Viewport {
-                x: 0.0,
-                y: 0.0,
-                width: f64::from(WINDOW.0),
-                height: seen.height,
-                scale: 1.0,
-            }),
-            from_surface: Some(true),
-            capture_beyond_viewport: Some(true),
-            optimize_for_speed: None,
-        })
-        .map_err(|e| format!("{}: screenshot: {e}", seen.page.display()))?
-        .data;
+fn screenshot(
+    browser: &mut Chromium,
+    tab: &Tab,
+    seen: &Seen,
+    path: &Path,
+) -> Result<(), String> {
+    let shot = browser.call(
+        Some(tab),
+        "Page.captureScreenshot",
+        json!({
+            "format": "png",
+            "clip": {
+                "x": 0, "y": 0, "width": WINDOW.0, "height": seen.height,
+                "scale": 1,
+            },
+            "fromSurface": true,
+            "captureBeyondViewport": true,
+        }),
+    )?;
     use base64::Engine as _;
     let bytes = base64::engine::general_purpose::STANDARD
-        .decode(data)
-        .map_err(|e| e.to_string())?;
-    let mut note = String::new();
-    let _ = write!(note, "{}", path.display());
-    std::fs::write(path, bytes).map_err(|e| format!("{note}: {e}"))
+        .decode(shot["data"].as_str().unwrap_or_default())
+        .map_err(|e| format!("{}: screenshot: {e}", seen.page.display()))?;
+    std::fs::write(path, bytes).map_err(|e| format!("{}: {e}", path.display()))
 }

@@ -1,7 +1,7 @@
 //! Rendering and the files: determinism, outlined text, atomic writes and the check.
 
 use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use raystep_figure::{
     Anchor, DVec2, Figure, FigureError, Format, Mismatch, Page, Stroke,
@@ -23,13 +23,13 @@ fn sample(name: &str) -> Figure {
     Figure::new(name, "A sample.", page)
 }
 
-/// A fresh empty directory under the system temp dir.
-fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir()
-        .join(format!("raystep-figure-{test}-{}", std::process::id()));
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).unwrap();
-    dir
+/// A fresh empty directory under the system temp dir, removed when the
+/// test ends.
+fn scratch(test: &str) -> tempfile::TempDir {
+    tempfile::Builder::new()
+        .prefix(&format!("raystep-figure-{test}-"))
+        .tempdir()
+        .unwrap()
 }
 
 fn png_size(png: &[u8]) -> (u32, u32) {
@@ -108,7 +108,8 @@ fn the_recorded_size_is_rounded_down() {
 
 #[test]
 fn write_all_writes_both_files_and_no_temporaries() {
-    let dir = scratch("write").join("nested");
+    let scratch_dir = scratch("write");
+    let dir = scratch_dir.path().join("nested");
     let written =
         write_all(&[sample("one"), sample("two")], &dir, Format::Both).unwrap();
     assert_eq!(
@@ -120,22 +121,23 @@ fn write_all_writes_both_files_and_no_temporaries() {
     assert_eq!(fs::read(dir.join("one.png")).unwrap(), rendered.png);
 
     let svg_only = scratch("write-svg");
-    write_all(&[sample("one")], &svg_only, Format::Svg).unwrap();
-    assert_eq!(names(&svg_only), ["one.svg"]);
+    write_all(&[sample("one")], svg_only.path(), Format::Svg).unwrap();
+    assert_eq!(names(svg_only.path()), ["one.svg"]);
 }
 
 #[test]
 fn check_all_finds_differing_missing_and_extra_files() {
-    let dir = scratch("check");
+    let scratch_dir = scratch("check");
+    let dir = scratch_dir.path();
     let figures = [sample("one"), sample("two")];
-    write_all(&figures, &dir, Format::Both).unwrap();
-    assert_eq!(check_all(&figures, &dir, Format::Both).unwrap(), []);
+    write_all(&figures, dir, Format::Both).unwrap();
+    assert_eq!(check_all(&figures, dir, Format::Both).unwrap(), []);
 
     fs::write(dir.join("one.svg"), "<svg/>").unwrap();
     fs::remove_file(dir.join("two.png")).unwrap();
     fs::write(dir.join("stray.svg"), "<svg/>").unwrap();
     fs::write(dir.join("notes.txt"), "not a figure").unwrap();
-    let found = check_all(&figures, &dir, Format::Both).unwrap();
+    let found = check_all(&figures, dir, Format::Both).unwrap();
     assert_eq!(
         found,
         [
@@ -150,14 +152,15 @@ fn check_all_finds_differing_missing_and_extra_files() {
     );
     // checking PNGs only ignores the SVG files
     assert_eq!(
-        check_all(&figures, &dir, Format::Png).unwrap(),
+        check_all(&figures, dir, Format::Png).unwrap(),
         [Mismatch::Missing(dir.join("two.png"))]
     );
 }
 
 #[test]
 fn unwritable_directory_is_an_error_naming_the_path() {
-    let dir = scratch("unwritable");
+    let scratch_dir = scratch("unwritable");
+    let dir = scratch_dir.path();
     let file = dir.join("plain-file");
     fs::write(&file, "").unwrap();
     let target = file.join("figures");
@@ -175,10 +178,11 @@ fn unwritable_directory_is_an_error_naming_the_path() {
 
 #[test]
 fn bad_and_duplicate_names_are_errors() {
-    let dir = scratch("names");
-    let err = write_all(&[sample("../up")], &dir, Format::Svg).unwrap_err();
+    let scratch_dir = scratch("names");
+    let dir = scratch_dir.path();
+    let err = write_all(&[sample("../up")], dir, Format::Svg).unwrap_err();
     assert!(err.to_string().contains("../up"), "{err}");
     let err =
-        write_all(&[sample("x"), sample("x")], &dir, Format::Svg).unwrap_err();
+        write_all(&[sample("x"), sample("x")], dir, Format::Svg).unwrap_err();
     assert_eq!(err.to_string(), "two figures are named x");
 }
