@@ -223,34 +223,14 @@ pub fn line_difference(
 mod tests {
     use super::*;
 
-    /// `raystep_check::Table`'s layout, as the chapters' snapshots hold it.
+    /// A table as the chapters' snapshots hold it: written by
+    /// `raystep_check::Table` itself.
     fn table(columns: &[&str], rows: &[&[&str]]) -> String {
-        let widths: Vec<usize> = (0..columns.len())
-            .map(|c| {
-                rows.iter()
-                    .map(|r| r[c].chars().count())
-                    .chain([columns[c].chars().count()])
-                    .max()
-                    .unwrap()
-            })
-            .collect();
-        let line = |cells: &[&str]| {
-            let padded: Vec<String> = cells
-                .iter()
-                .zip(&widths)
-                .map(|(c, w)| format!("{c:<w$}"))
-                .collect();
-            padded.join(" | ").trim_end().to_string()
-        };
-        let mut text = line(columns) + "\n";
-        let rule: Vec<String> = widths.iter().map(|w| "-".repeat(*w)).collect();
-        text.push_str(&rule.join("-|-"));
-        text.push('\n');
+        let mut table = raystep_check::Table::new(columns);
         for row in rows {
-            text.push_str(&line(row));
-            text.push('\n');
+            table.row(row);
         }
-        text
+        table.to_string()
     }
 
     const COLUMNS: [&str; 3] = ["ray", "case", "t"];

@@ -13,17 +13,8 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
-fn workspace() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-/// The outer build's target folder: `CARGO_TARGET_TMPDIR` is `<target>/tmp`.
-fn outer_target() -> PathBuf {
-    Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .parent()
-        .expect("CARGO_TARGET_TMPDIR is <target>/tmp")
-        .to_path_buf()
-}
+mod common;
+use common::{outer_target, workspace};
 
 /// (chapter id, exercises) for every `chapters/chNN-*` folder.
 fn chapters() -> Vec<(String, Vec<String>)> {

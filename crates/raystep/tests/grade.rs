@@ -10,19 +10,10 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+mod common;
+use common::{outer_target, workspace};
+
 const CHAPTER: &str = "chapters/ch01-implicit-lines-planes";
-
-fn workspace() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-/// The outer build's target folder: `CARGO_TARGET_TMPDIR` is `<target>/tmp`.
-fn outer_target() -> PathBuf {
-    Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .parent()
-        .expect("CARGO_TARGET_TMPDIR is <target>/tmp")
-        .to_path_buf()
-}
 
 /// The reference module `src/<exercise>.rs` of chapter 1.
 fn reference(exercise: &str) -> String {

@@ -12,20 +12,8 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::{Mutex, MutexGuard, OnceLock};
 
-fn workspace() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../..")
-        .canonicalize()
-        .unwrap()
-}
-
-/// The outer build's target folder: `CARGO_TARGET_TMPDIR` is `<target>/tmp`.
-fn outer_target() -> PathBuf {
-    Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .parent()
-        .expect("CARGO_TARGET_TMPDIR is <target>/tmp")
-        .to_path_buf()
-}
+mod common;
+use common::{outer_target, workspace};
 
 /// Runs `raystep <args>` in `dir`: (success, stdout, stderr).
 fn raystep(args: &[&str], dir: &Path) -> (bool, String, String) {
