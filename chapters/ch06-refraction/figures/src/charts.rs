@@ -4,7 +4,7 @@
 //! `book/src/figures/ch06/fresnel.csv` (written by `raystep measure`).
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::{
-    AxisBreak, ChartError, Figure, LogAxis, chart, font, measured,
+    AxisBreak, ChartError, Figure, Labels, LogAxis, Spot, chart, font, measured,
 };
 
 use crate::measurements::{CHART_MODES, FresnelRow};
@@ -183,16 +183,46 @@ fn draw(
     if let Some(at) = errors.break_at() {
         c.draw_series([AxisBreak::y((min_ms, at))])?;
     }
+    let at = |k: usize, r: &FresnelRow| {
+        let y = if r.rmse == 0.0 {
+            errors.zero_row() + LANE * (1.0 - k as f64)
+        } else {
+            errors.at(r.rmse)
+        };
+        (r.millis, y)
+    };
+    let mut placed = Labels::new();
+    for k in 0..COLOURS.len() {
+        for r in of_mode(k) {
+            placed.avoid_point(c.backend_coord(&at(k, r)), 6);
+        }
+    }
     for (k, colour) in COLOURS.iter().enumerate() {
-        let lane = LANE * (1.0 - k as f64);
-        c.draw_series(of_mode(k).map(|r| {
-            let y = if r.rmse == 0.0 {
-                errors.zero_row() + lane
-            } else {
-                errors.at(r.rmse)
+        c.draw_series(
+            of_mode(k).map(|r| Circle::new(at(k, r), 5, colour.filled())),
+        )?;
+    }
+    // Each point named by its material, where a name fits beside it.
+    let size = 13.0;
+    for (k, colour) in COLOURS.iter().enumerate() {
+        for r in of_mode(k) {
+            let point = at(k, r);
+            let spots =
+                [Spot::E, Spot::W, Spot::N, Spot::S, Spot::NE, Spot::SE];
+            let Some((offset, pos)) = placed.place(
+                c.backend_coord(&point),
+                &r.material,
+                size,
+                &spots,
+            ) else {
+                continue;
             };
-            Circle::new((r.millis, y), 5, colour.filled())
-        }))?;
+            let style = font(size).color(colour).pos(pos);
+            c.draw_series(std::iter::once(
+                EmptyElement::at(point)
+                    + Text::new(r.material.clone(), offset, style),
+            ))?;
+        }
     }
     Ok(())
 }
