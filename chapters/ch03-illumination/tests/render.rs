@@ -2,8 +2,8 @@
 //! model. These use every exercise.
 use std::path::Path;
 
-use ch03::{DVec3, Image, RenderOptions, Terms, World, render};
-use raystep_check::{Tolerance, assert_image_matches};
+use ch03::{DVec3, RenderOptions, Terms, World, render};
+use raystep_check::{Tolerance, assert_image_matches, differing_pixels};
 use raystep_render::Progress;
 
 fn spheres(width: u32, height: u32) -> World {
@@ -50,18 +50,7 @@ fn same_image_for_one_and_two_threads() {
     let world = spheres(48, 27);
     let one = render(&world, Terms::All, &quiet(Some(1))).unwrap();
     let two = render(&world, Terms::All, &quiet(Some(2))).unwrap();
-    let bits = |image: &Image| {
-        image
-            .pixels()
-            .iter()
-            .map(|c| c.to_array().map(f64::to_bits))
-            .collect::<Vec<_>>()
-    };
-    let differing = bits(&one)
-        .iter()
-        .zip(&bits(&two))
-        .filter(|(a, b)| a != b)
-        .count();
+    let differing = differing_pixels(&one, &two);
     assert!(
         differing == 0,
         "pixels that differ between one thread and two: expected 0 (every \

@@ -1,7 +1,9 @@
 //! Exercise 1: Sᵢ from a shadow ray.
 use ch04::{DVec3, Hit, Light, Offset, World, render, shadow};
 use proptest::prelude::*;
-use raystep_check::{Table, Tolerance, assert_image_matches, seeded, vec3};
+use raystep_check::{
+    Table, Tolerance, assert_image_matches, differing_pixels, seeded, vec3,
+};
 use raystep_render::{Progress, RenderOptions};
 use raystep_scene::Shape;
 use std::path::Path;
@@ -216,12 +218,7 @@ fn renders_are_the_same_for_any_number_of_threads() {
     let w = two_lights(48, 27);
     let one = render(&w, Offset::ScaleAware, &options(1)).unwrap();
     let two = render(&w, Offset::ScaleAware, &options(2)).unwrap();
-    let differing = one
-        .pixels()
-        .iter()
-        .zip(two.pixels())
-        .filter(|(a, b)| a != b)
-        .count();
+    let differing = differing_pixels(&one, &two);
     assert!(
         differing == 0,
         "pixels that differ between one thread and two: expected 0 (every \

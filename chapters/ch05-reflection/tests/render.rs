@@ -3,8 +3,8 @@
 //! both exercises.
 use std::path::Path;
 
-use ch05::{DEFAULT_STOP, Image, RayCounts, pixel_tree, render};
-use raystep_check::{Tolerance, assert_image_matches};
+use ch05::{DEFAULT_STOP, RayCounts, pixel_tree, render};
+use raystep_check::{Tolerance, assert_image_matches, differing_pixels};
 
 mod common;
 use common::{chapter_scene, quiet};
@@ -39,18 +39,7 @@ fn same_image_and_counts_for_one_and_two_threads() {
         render(&world, &DEFAULT_STOP, &quiet(Some(1))).unwrap();
     let (two, two_counts) =
         render(&world, &DEFAULT_STOP, &quiet(Some(2))).unwrap();
-    let bits = |image: &Image| {
-        image
-            .pixels()
-            .iter()
-            .map(|c| c.to_array().map(f64::to_bits))
-            .collect::<Vec<_>>()
-    };
-    let differing = bits(&one)
-        .iter()
-        .zip(&bits(&two))
-        .filter(|(a, b)| a != b)
-        .count();
+    let differing = differing_pixels(&one, &two);
     assert!(
         differing == 0,
         "pixels that differ between one thread and two: expected 0 (every \

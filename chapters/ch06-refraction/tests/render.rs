@@ -4,7 +4,7 @@ use ch06::{
     DEFAULT_STOP, DVec3, Fresnel, Image, LoggedRay, Media, Path as RayPath,
     Ray, RayCounts, RenderOptions, Stop, Tracer, World, pixel_tree, render,
 };
-use raystep_check::{Tolerance, assert_image_matches};
+use raystep_check::{Tolerance, assert_image_matches, differing_pixels};
 use raystep_render::Progress;
 use std::path::Path;
 
@@ -437,18 +437,7 @@ fn same_render_for_one_and_two_threads() {
         render(&world, &DEFAULT_STOP, Fresnel::Exact, &quiet(Some(1))).unwrap();
     let two =
         render(&world, &DEFAULT_STOP, Fresnel::Exact, &quiet(Some(2))).unwrap();
-    let bits = |image: &Image| {
-        image
-            .pixels()
-            .iter()
-            .map(|c| c.to_array().map(f64::to_bits))
-            .collect::<Vec<_>>()
-    };
-    let differing = bits(&one.0)
-        .iter()
-        .zip(&bits(&two.0))
-        .filter(|(a, b)| a != b)
-        .count();
+    let differing = differing_pixels(&one.0, &two.0);
     assert!(
         differing == 0,
         "pixels that differ between one thread and two: expected 0 (every \

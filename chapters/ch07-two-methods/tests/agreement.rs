@@ -29,35 +29,35 @@ fn assert_agree(name: &str, stage: &Stage) -> Agreement {
     agreement
 }
 
-/// The chapter's scene with a ball of 320 triangles: edges almost never
-/// pass within 1e-6 pixel of a pixel centre here, so the two methods
-/// agree on every pixel.
-#[test]
-fn shapes_agree_at_64x36() {
-    let agreement = assert_agree("shapes 64×36", &shapes(2, 64, 36));
-    assert_eq!(agreement.pixels, 64 * 36, "pixels compared");
+/// The chapter's scene with a ball of 320 triangles at `width × height`:
+/// edges almost never pass within 1e-6 pixel of a pixel centre here, so
+/// the two methods agree on every pixel.
+fn assert_shapes_agree_everywhere(width: u32, height: u32) {
+    let name = format!("shapes {width}×{height}");
+    let agreement = assert_agree(&name, &shapes(2, width, height));
+    assert_eq!(
+        agreement.pixels,
+        (width * height) as usize,
+        "pixels compared"
+    );
     assert!(
         agreement.differing() == 0,
-        "shapes 64×36: pixels whose ids differ between the rasterizer and \
-         the ray caster: expected 0 (no edge passes this close to a pixel \
-         centre here), got {}, the first at {:?}",
+        "{name}: pixels whose ids differ between the rasterizer and the ray \
+         caster: expected 0 (no edge passes this close to a pixel centre \
+         here), got {}, the first at {:?}",
         agreement.differing(),
         &agreement.on_edges[..agreement.on_edges.len().min(5)]
     );
 }
 
 #[test]
+fn shapes_agree_at_64x36() {
+    assert_shapes_agree_everywhere(64, 36);
+}
+
+#[test]
 fn shapes_agree_at_160x90() {
-    let agreement = assert_agree("shapes 160×90", &shapes(2, 160, 90));
-    assert_eq!(agreement.pixels, 160 * 90, "pixels compared");
-    assert!(
-        agreement.differing() == 0,
-        "shapes 160×90: pixels whose ids differ between the rasterizer and \
-         the ray caster: expected 0 (no edge passes this close to a pixel \
-         centre here), got {}, the first at {:?}",
-        agreement.differing(),
-        &agreement.on_edges[..agreement.on_edges.len().min(5)]
-    );
+    assert_shapes_agree_everywhere(160, 90);
 }
 
 /// Pixels per scene unit in the fan scene: the camera at (0, 0, 4) looks

@@ -5,6 +5,21 @@ use std::path::{Path, PathBuf};
 
 use raystep_render::Image;
 
+/// How many pixels of `a` and `b` differ in any bit: 0 only for the same
+/// image bit for bit (a render that must not depend on the number of
+/// threads, say). Images of different sizes differ in every pixel.
+pub fn differing_pixels(a: &Image, b: &Image) -> usize {
+    if (a.width(), a.height()) != (b.width(), b.height()) {
+        return a.pixels().len().max(b.pixels().len());
+    }
+    let bits = |c: &raystep_render::Rgb| c.to_array().map(f64::to_bits);
+    a.pixels()
+        .iter()
+        .zip(b.pixels())
+        .filter(|(a, b)| bits(a) != bits(b))
+        .count()
+}
+
 /// How far a render may be from its reference image and still pass.
 ///
 /// Images are compared in 8-bit sRGB, the levels stored in the PNG. A pixel

@@ -11,7 +11,9 @@ mod round;
 mod seeded;
 mod table;
 
-pub use image_compare::{Tolerance, assert_image_matches, diff_dir};
+pub use image_compare::{
+    Tolerance, assert_image_matches, diff_dir, differing_pixels,
+};
 pub use round::{num, num_places, vec2, vec3};
 pub use seeded::{seeded, unit_vector};
 pub use table::Table;
