@@ -12,7 +12,7 @@ use crate::{BruteForce, Sphere};
 
 /// The surface of one shape of a scene file: chapter 3's sphere, or
 /// chapter 2's plane or polygon (an error names what is wrong with a
-/// degenerate polygon).
+/// degenerate polygon, or that the shape is a later chapter's).
 pub fn shape(spec: &ShapeSpec) -> Result<Arc<dyn Shape>, String> {
     Ok(match spec {
         ShapeSpec::Sphere { center, radius } => {
@@ -24,6 +24,13 @@ pub fn shape(spec: &ShapeSpec) -> Result<Arc<dyn Shape>, String> {
         })),
         ShapeSpec::Polygon { vertices } => {
             Arc::new(Polygon::new(vertices.clone()).map_err(|e| e.to_string())?)
+        }
+        other => {
+            return Err(format!(
+                "a {} is one of chapter 8's primitives, which chapters 3–7 \
+                 do not know: render this scene with `--chapter ch08`",
+                other.kind()
+            ));
         }
     })
 }

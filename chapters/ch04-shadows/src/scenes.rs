@@ -1,6 +1,6 @@
 //! The chapter's scenes, and the acne scene at any scale.
 use ch03::World;
-use raystep_scene::{Scene, Shape};
+use raystep_scene::Scene;
 
 /// `scenes/acne.toml`: spheres resting on a floor, one light, at scale 1.
 pub const ACNE_SCENE: &str = include_str!("../scenes/acne.toml");
@@ -15,18 +15,7 @@ pub const TWO_LIGHTS_SCENE: &str = include_str!("../scenes/two-lights.toml");
 pub fn scaled(scene: &Scene, scale: f64) -> Scene {
     let mut scene = scene.clone();
     for object in &mut scene.objects {
-        match &mut object.shape {
-            Shape::Sphere { center, radius } => {
-                *center *= scale;
-                *radius *= scale;
-            }
-            Shape::Plane { point, .. } => *point *= scale,
-            Shape::Polygon { vertices } => {
-                for vertex in vertices {
-                    *vertex *= scale;
-                }
-            }
-        }
+        object.shape.scale(scale);
     }
     for light in &mut scene.lights {
         light.position *= scale;

@@ -1,10 +1,10 @@
-//! Scene files for chapters 3–6 of the raystep lecture: read, checked, and
+//! Scene files for chapters 3–8 of the raystep lecture: read, checked, and
 //! handed over as plain data.
 //!
 //! A scene is a TOML file. [`load`] (or [`parse`], for a string) reads it
 //! into a [`Scene`]: image size, [`CameraSpec`], ambient light, point
 //! [`Light`]s, named [`Material`]s and [`Object`]s whose [`Shape`] is a
-//! sphere, a plane or a polygon. This crate checks the data but knows no
+//! sphere, a plane or a polygon, or one of chapter 8's primitives. This crate checks the data but knows no
 //! geometry: the chapters build their own spheres, planes and polygons from
 //! it.
 //!
@@ -26,11 +26,14 @@
 //!   grey or `[r, g, b]`; no component may be negative (none is capped at 1).
 //! * `ior` is a positive number or a name from [`REFRACTIVE_INDICES`].
 //! * Each `[[objects]]` entry has exactly one shape key, `sphere`, `plane`
-//!   or `polygon`, whose value is a table (inline as above, or as an
-//!   `[objects.sphere]` sub-table), plus an optional `material`. We chose
-//!   shape keys over `type = "sphere"` because a serde tagged enum cannot
-//!   reject unknown fields reliably; three optional keys can, and the
-//!   "exactly one shape" rule gets an error worded for it.
+//!   or `polygon` (chapters 2–7), or one of chapter 8's `box`, `cylinder`,
+//!   `ellipsoid`, `triangle`, `torus`, `saddle` and `blobby`, whose value
+//!   is a table (inline as above, or as an `[objects.sphere]` sub-table),
+//!   plus an optional `material`. We chose shape keys over
+//!   `type = "sphere"` because a serde tagged enum cannot reject unknown
+//!   fields reliably; optional keys can, and the "exactly one shape" rule
+//!   gets an error worded for it. A chapter that has not taught a shape
+//!   refuses it when it builds its world.
 //! * The materials list always starts with the one named `"default"` (0.7
 //!   grey, diffuse only, unless the file defines `[materials.default]`),
 //!   followed by the file's other materials in the order they appear.
@@ -59,8 +62,8 @@
 mod error;
 mod mesh;
 mod raw;
+mod shapes;
 
-use std::ops::Range;
 use std::path::Path;
 
 use raystep_core::{Camera, DVec3};
@@ -301,15 +304,165 @@ pub enum Shape {
         /// Its corners in order around its edge, at least 3.
         vertices: Vec<DVec3>,
     },
+    /// An axis-aligned box (chapter 8).
+    Box {
+        /// The corner with the smallest coordinates.
+        min: DVec3,
+        /// The opposite corner, greater than `min` on every axis.
+        max: DVec3,
+    },
+    /// A cylinder closed by two discs (chapter 8).
+    Cylinder {
+        /// The centre of one cap.
+        base: DVec3,
+        /// The centre of the other cap, `≠ base`.
+        top: DVec3,
+        /// Its radius, `> 0`.
+        radius: f64,
+    },
+    /// An axis-aligned ellipsoid (chapter 8).
+    Ellipsoid {
+        /// Its centre.
+        center: DVec3,
+        /// Its semi-axes along x, y and z, each `> 0`.
+        radii: DVec3,
+    },
+    /// A triangle, hit by one of chapter 8's three tests.
+    Triangle {
+        /// Its corners.
+        vertices: [DVec3; 3],
+        /// Which ray–triangle test hits it.
+        test: TriangleTest,
+    },
+    /// A ring torus (chapter 8): a circle of radius `minor` swept around
+    /// a circle of radius `major`.
+    Torus {
+        /// Its centre.
+        center: DVec3,
+        /// The axis it is swept around, a unit vector (default y).
+        axis: DVec3,
+        /// The sweep's radius R, `> minor`.
+        major: f64,
+        /// The tube's radius r, `0 < r < R`.
+        minor: f64,
+        /// How its quartic is solved.
+        solver: TorusSolver,
+    },
+    /// The monkey saddle y = (x³ − 3xz²)/s², clipped to |x|, |z| ≤ s
+    /// (chapter 8's cubic surface).
+    Saddle {
+        /// Its centre.
+        center: DVec3,
+        /// Its half width s, `> 0`.
+        size: f64,
+    },
+    /// A blobby object (chapter 8): where the summed fields of its balls
+    /// reach `threshold`.
+    Blobby {
+        /// The balls, at least one.
+        balls: Vec<Ball>,
+        /// The iso-value, `0 < threshold < Σ strength`.
+        threshold: f64,
+    },
+}
+
+/// One ball of a [`Shape::Blobby`]: a field `strength·f(r / radius)` that
+/// falls from `strength` at its centre to 0 at `radius`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ball {
+    /// Its centre.
+    pub center: DVec3,
+    /// Where its field ends, `> 0`.
+    pub radius: f64,
+    /// Its field at the centre, `> 0` (default 1).
+    pub strength: f64,
+}
+
+/// Chapter 8's three ray–triangle tests, by their names in a scene file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TriangleTest {
+    /// `"plane-inside"`: chapter 2's plane hit and inside test.
+    PlaneInside,
+    /// `"moller-trumbore"`: Möller and Trumbore (1997).
+    MollerTrumbore,
+    /// `"watertight"` (the default): Woop, Benthin and Wald (2013).
+    Watertight,
+}
+
+/// How a torus's quartic is solved, by its name in a scene file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TorusSolver {
+    /// `"closed-form"`: Ferrari's formula.
+    ClosedForm,
+    /// `"bracketed"` (the default): roots bracketed inside the bound.
+    Bracketed,
 }
 
 impl Shape {
-    /// The shape's key in the file: `sphere`, `plane` or `polygon`.
+    /// The shape's key in the file: `sphere`, `plane`, `polygon`, `box`, …
     pub fn kind(&self) -> &'static str {
         match self {
             Shape::Sphere { .. } => "sphere",
             Shape::Plane { .. } => "plane",
             Shape::Polygon { .. } => "polygon",
+            Shape::Box { .. } => "box",
+            Shape::Cylinder { .. } => "cylinder",
+            Shape::Ellipsoid { .. } => "ellipsoid",
+            Shape::Triangle { .. } => "triangle",
+            Shape::Torus { .. } => "torus",
+            Shape::Saddle { .. } => "saddle",
+            Shape::Blobby { .. } => "blobby",
+        }
+    }
+
+    /// The same shape scaled by `s > 0` about the origin (its points,
+    /// sizes and distances times `s`; its directions unchanged).
+    pub fn scale(&mut self, s: f64) {
+        match self {
+            Shape::Sphere { center, radius } => {
+                *center *= s;
+                *radius *= s;
+            }
+            Shape::Plane { point, .. } => *point *= s,
+            Shape::Polygon { vertices } => {
+                vertices.iter_mut().for_each(|v| *v *= s)
+            }
+            Shape::Box { min, max } => {
+                *min *= s;
+                *max *= s;
+            }
+            Shape::Cylinder { base, top, radius } => {
+                *base *= s;
+                *top *= s;
+                *radius *= s;
+            }
+            Shape::Ellipsoid { center, radii } => {
+                *center *= s;
+                *radii *= s;
+            }
+            Shape::Triangle { vertices, .. } => {
+                vertices.iter_mut().for_each(|v| *v *= s)
+            }
+            Shape::Torus {
+                center,
+                major,
+                minor,
+                ..
+            } => {
+                *center *= s;
+                *major *= s;
+                *minor *= s;
+            }
+            Shape::Saddle { center, size } => {
+                *center *= s;
+                *size *= s;
+            }
+            Shape::Blobby { balls, .. } => {
+                for ball in balls {
+                    ball.center *= s;
+                    ball.radius *= s;
+                }
+            }
         }
     }
 }
@@ -361,7 +514,7 @@ pub(crate) fn format_number(v: f64) -> String {
     }
 }
 
-fn format_vec(v: DVec3) -> String {
+pub(crate) fn format_vec(v: DVec3) -> String {
     format!(
         "[{}, {}, {}]",
         format_number(v.x),
@@ -587,84 +740,13 @@ fn object(
     cx: &Context,
 ) -> Result<Object, SceneError> {
     let span = raw.span();
-    let Table(o) = raw.into_inner();
+    let Table(mut o) = raw.into_inner();
     let line = cx.line_column(span.start).0;
 
-    let shape = match (o.sphere, o.plane, o.polygon) {
-        (Some(s), None, None) => {
-            let Table(s) = s.into_inner();
-            let radius = s.radius.get_ref().0;
-            if radius <= 0.0 {
-                return Err(cx.error(
-                    s.radius.span(),
-                    format!("must be positive, got {}", format_number(radius)),
-                ));
-            }
-            Shape::Sphere {
-                center: s.center.0,
-                radius,
-            }
-        }
-        (None, Some(p), None) => {
-            let Table(p) = p.into_inner();
-            let n = p.normal.get_ref().0;
-            // Scaled first, so that a normal like [0, 1e-200, 0] still has
-            // a direction.
-            let Some(normal) = (n / n.abs().max_element()).try_normalize()
-            else {
-                return Err(cx.error(
-                    p.normal.span(),
-                    format!(
-                        "must have a non-zero length, got {}",
-                        format_vec(n)
-                    ),
-                ));
-            };
-            Shape::Plane {
-                point: p.point.0,
-                normal,
-            }
-        }
-        (None, None, Some(p)) => {
-            let Table(p) = p.into_inner();
-            let count = p.vertices.get_ref().len();
-            if count < 3 {
-                return Err(cx.error(
-                    p.vertices.span(),
-                    format!("a polygon needs at least 3 vertices, got {count}"),
-                ));
-            }
-            Shape::Polygon {
-                vertices: p
-                    .vertices
-                    .into_inner()
-                    .into_iter()
-                    .map(|v| v.0)
-                    .collect(),
-            }
-        }
-        (sphere, plane, polygon) => {
-            // None, or several: blame the second shape key in the file.
-            let mut keys: Vec<(&str, Range<usize>)> = [
-                ("sphere", sphere.map(|s| s.span())),
-                ("plane", plane.map(|s| s.span())),
-                ("polygon", polygon.map(|s| s.span())),
-            ]
-            .into_iter()
-            .filter_map(|(name, span)| Some((name, span?)))
-            .collect();
-            keys.sort_by_key(|(_, span)| span.start);
-            return Err(match &keys[..] {
-                [(first, _), (_, second), ..] => cx.error(
-                    second.clone(),
-                    format!("an object has exactly one shape, this one already has `{first}`"),
-                ),
-                _ => cx.error(span, "needs a shape: one of `sphere`, `plane` or `polygon`"),
-            });
-        }
-    };
+    let material_name = o.material.take();
+    let shape = shapes::shape(o, span, cx)?;
 
-    let material = match &o.material {
+    let material = match &material_name {
         None => 0,
         Some(name) => materials
             .iter()

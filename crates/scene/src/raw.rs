@@ -104,6 +104,15 @@ pub(crate) struct RawObject {
     pub sphere: Option<Spanned<Table<RawSphere>>>,
     pub plane: Option<Spanned<Table<RawPlane>>>,
     pub polygon: Option<Spanned<Table<RawPolygon>>>,
+    // chapter 8's primitives
+    #[serde(rename = "box")]
+    pub aabb: Option<Spanned<Table<RawBox>>>,
+    pub cylinder: Option<Spanned<Table<RawCylinder>>>,
+    pub ellipsoid: Option<Spanned<Table<RawEllipsoid>>>,
+    pub triangle: Option<Spanned<Table<RawTriangle>>>,
+    pub torus: Option<Spanned<Table<RawTorus>>>,
+    pub saddle: Option<Spanned<Table<RawSaddle>>>,
+    pub blobby: Option<Spanned<Table<RawBlobby>>>,
     pub material: Option<Spanned<String>>,
 }
 
@@ -125,6 +134,67 @@ pub(crate) struct RawPlane {
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawPolygon {
     pub vertices: Spanned<Vec<Vec3>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawBox {
+    pub min: Vec3,
+    pub max: Spanned<Vec3>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawCylinder {
+    pub base: Vec3,
+    pub top: Spanned<Vec3>,
+    pub radius: Spanned<Finite>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawEllipsoid {
+    pub center: Vec3,
+    pub radii: Spanned<Vec3>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawTriangle {
+    pub vertices: Spanned<Vec<Vec3>>,
+    pub test: Option<Spanned<String>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawTorus {
+    pub center: Vec3,
+    pub axis: Option<Spanned<Vec3>>,
+    pub major: Spanned<Finite>,
+    pub minor: Spanned<Finite>,
+    pub solver: Option<Spanned<String>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawSaddle {
+    pub center: Vec3,
+    pub size: Spanned<Finite>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawBlobby {
+    pub threshold: Spanned<Finite>,
+    pub balls: Spanned<Vec<Table<RawBall>>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawBall {
+    pub center: Vec3,
+    pub radius: Spanned<Finite>,
+    pub strength: Option<Spanned<Finite>>,
 }
 
 /// A struct that must be written as a TOML table.

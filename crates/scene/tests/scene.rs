@@ -5,8 +5,9 @@ use std::path::Path;
 
 use raystep_core::DVec3;
 use raystep_scene::{
-    CameraSpec, Checker, Light, MAX_SIZE, Material, Object, REFRACTIVE_INDICES,
-    Scene, SceneError, Shape, index_of_refraction, load, parse,
+    Ball, CameraSpec, Checker, Light, MAX_SIZE, Material, Object,
+    REFRACTIVE_INDICES, Scene, SceneError, Shape, TorusSolver, TriangleTest,
+    index_of_refraction, load, parse,
 };
 
 const EXAMPLE: &str = include_str!("../src/example.toml");
@@ -110,6 +111,77 @@ fn the_complete_example_scene_reads_into_the_expected_values() {
                 },
                 material: 1,
                 line: 61,
+            },
+            Object {
+                shape: Shape::Box {
+                    min: v(-1.0, -1.0, -1.0),
+                    max: v(1.0, 0.0, 1.0),
+                },
+                material: 0,
+                line: 67,
+            },
+            Object {
+                shape: Shape::Cylinder {
+                    base: v(0.0, 0.0, 0.0),
+                    top: v(0.0, 2.0, 0.0),
+                    radius: 0.5,
+                },
+                material: 0,
+                line: 70,
+            },
+            Object {
+                shape: Shape::Ellipsoid {
+                    center: DVec3::ZERO,
+                    radii: v(2.0, 1.0, 0.5),
+                },
+                material: 0,
+                line: 73,
+            },
+            Object {
+                shape: Shape::Triangle {
+                    vertices: [DVec3::ZERO, DVec3::X, DVec3::Y],
+                    test: TriangleTest::Watertight,
+                },
+                material: 0,
+                line: 76,
+            },
+            Object {
+                shape: Shape::Torus {
+                    center: DVec3::ZERO,
+                    axis: DVec3::Y,
+                    major: 1.0,
+                    minor: 0.25,
+                    solver: TorusSolver::Bracketed,
+                },
+                material: 0,
+                line: 79,
+            },
+            Object {
+                shape: Shape::Saddle {
+                    center: DVec3::ZERO,
+                    size: 1.0,
+                },
+                material: 0,
+                line: 82,
+            },
+            Object {
+                shape: Shape::Blobby {
+                    balls: vec![
+                        Ball {
+                            center: DVec3::ZERO,
+                            radius: 1.0,
+                            strength: 1.0,
+                        },
+                        Ball {
+                            center: v(0.8, 0.0, 0.0),
+                            radius: 1.0,
+                            strength: 1.0,
+                        },
+                    ],
+                    threshold: 0.5,
+                },
+                material: 0,
+                line: 85,
             },
         ],
     };
@@ -384,7 +456,49 @@ bad_inputs! {
         => "bad.toml:3:11: camera.look_at: too close to or too far from look_from to give a view direction (look_at - look_from = [inf, 0, 0])";
     object_without_a_shape:
         concat!(camera!(), "[[objects]]\nsphere = { center = [0, 0, 0], radius = 1 }\n[[objects]]\nmaterial = \"default\"\n")
-        => "bad.toml:6:1: objects[1]: needs a shape: one of `sphere`, `plane` or `polygon`";
+        => "bad.toml:6:1: objects[1]: needs a shape: one of `sphere`, `plane`, `polygon`, `box`, `cylinder`, `ellipsoid`, `triangle`, `torus`, `saddle` or `blobby`";
+    degenerate_box:
+        concat!(camera!(), "[[objects]]\nbox = { min = [0, 0, 0], max = [1, 0, 1] }\n")
+        => "bad.toml:5:32: objects[0].box.max: must be greater than min on every axis (a box with no volume is degenerate), got min = [0, 0, 0], max = [1, 0, 1]";
+    cylinder_without_an_axis:
+        concat!(camera!(), "[[objects]]\ncylinder = { base = [1, 2, 3], top = [1, 2, 3], radius = 1 }\n")
+        => "bad.toml:5:38: objects[0].cylinder.top: must differ from base (the axis needs a direction), got base = [1, 2, 3], top = [1, 2, 3]";
+    negative_cylinder_radius:
+        concat!(camera!(), "[[objects]]\ncylinder = { base = [0, 0, 0], top = [0, 1, 0], radius = -0.5 }\n")
+        => "bad.toml:5:58: objects[0].cylinder.radius: must be positive, got -0.5";
+    zero_ellipsoid_radius:
+        concat!(camera!(), "[[objects]]\nellipsoid = { center = [0, 0, 0], radii = [1, 0, 1] }\n")
+        => "bad.toml:5:43: objects[0].ellipsoid.radii: must all be positive, got [1, 0, 1]";
+    four_triangle_vertices:
+        concat!(camera!(), "[[objects]]\ntriangle = { vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]] }\n")
+        => "bad.toml:5:25: objects[0].triangle.vertices: a triangle has exactly 3 vertices, got 4";
+    unknown_triangle_test:
+        concat!(camera!(), "[[objects]]\ntriangle = { vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]], test = \"fast\" }\n")
+        => "bad.toml:5:67: objects[0].triangle.test: unknown name \"fast\", expected one of \"watertight\", \"moller-trumbore\", \"plane-inside\"";
+    spindle_torus:
+        concat!(camera!(), "[[objects]]\ntorus = { center = [0, 0, 0], major = 1, minor = 1.5 }\n")
+        => "bad.toml:5:50: objects[0].torus.minor: must be less than major (1): only ring tori, got 1.5; a spindle or horn torus (minor ≥ major) intersects itself and is refused";
+    zero_torus_radius:
+        concat!(camera!(), "[[objects]]\ntorus = { center = [0, 0, 0], major = 0, minor = 0.5 }\n")
+        => "bad.toml:5:39: objects[0].torus.major: must be positive, got 0";
+    zero_torus_axis:
+        concat!(camera!(), "[[objects]]\ntorus = { center = [0, 0, 0], axis = [0, 0, 0], major = 1, minor = 0.5 }\n")
+        => "bad.toml:5:38: objects[0].torus.axis: must have a non-zero length, got [0, 0, 0]";
+    nan_in_a_torus:
+        concat!(camera!(), "[[objects]]\ntorus = { center = [0, nan, 0], major = 1, minor = 0.5 }\n")
+        => "bad.toml:5:24: objects[0].torus.center[1]: must be a finite number, got nan";
+    negative_saddle_size:
+        concat!(camera!(), "[[objects]]\nsaddle = { center = [0, 0, 0], size = -2 }\n")
+        => "bad.toml:5:39: objects[0].saddle.size: must be positive, got -2";
+    blobby_without_balls:
+        concat!(camera!(), "[[objects]]\nblobby = { threshold = 0.5, balls = [] }\n")
+        => "bad.toml:5:37: objects[0].blobby.balls: a blobby object needs at least 1 ball, got 0";
+    blobby_ball_with_zero_radius:
+        concat!(camera!(), "[[objects]]\nblobby = { threshold = 0.5, balls = [{ center = [0, 0, 0], radius = 0 }] }\n")
+        => "bad.toml:5:69: objects[0].blobby.balls[0].radius: must be positive, got 0";
+    blobby_threshold_too_high:
+        concat!(camera!(), "[[objects]]\nblobby = { threshold = 2, balls = [{ center = [0, 0, 0], radius = 1 }] }\n")
+        => "bad.toml:5:24: objects[0].blobby.threshold: must be less than the balls' total strength (1), or the surface is empty; got 2";
     object_with_two_shapes:
         concat!(camera!(), "[[objects]]\nsphere = { center = [0, 0, 0], radius = 1 }\nplane = { point = [0, 0, 0], normal = [0, 1, 0] }\n")
         => "bad.toml:6:9: objects[0].plane: an object has exactly one shape, this one already has `sphere`";

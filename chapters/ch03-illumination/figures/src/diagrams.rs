@@ -81,7 +81,7 @@ fn basic_idea() -> Figure {
                     "the line lies on the plane"
                 );
             }
-            ShapeSpec::Polygon { .. } => {} // the scene has none
+            _ => {} // the scene has no other shape
         }
     }
 
