@@ -120,7 +120,7 @@ fn side_roots(o: DVec3, d: DVec3, r: f64) -> [Option<f64>; 2] {
     // b² − a·c = a·(r² − |l|²), l = o + (b/a)·d the closest approach
     let l = o + (b / a) * d;
     let discriminant = a * (r * r - l.dot(l));
-    if !(discriminant >= 0.0) {
+    if discriminant.is_nan() || discriminant < 0.0 {
         return [None, None];
     }
     let c = o.dot(o) - r * r;

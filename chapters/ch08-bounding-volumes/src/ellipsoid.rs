@@ -50,7 +50,7 @@ impl Ellipsoid {
         let b = -o.dot(d);
         let l = o + (b / a) * d; // the closest approach to the centre
         let discriminant = a * (1.0 - l.dot(l));
-        if !(discriminant >= 0.0) {
+        if discriminant.is_nan() || discriminant < 0.0 {
             return None;
         }
         let c = o.dot(o) - 1.0;
