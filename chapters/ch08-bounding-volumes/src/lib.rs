@@ -21,6 +21,28 @@ pub use raystep_core::{Aabb, DVec3, Hit, Interval, Ray, Shape};
 // Fast primitives: the box's slab test, cylinder, ellipsoid, triangles.
 // ---------------------------------------------------------------------
 
+mod axis_box;
+mod chapter_shapes;
+mod cylinder;
+mod ellipsoid;
+mod moller_trumbore;
+mod triangle;
+
+// Exercise 1: the robust slab test.
+#[cfg_attr(feature = "exercise", path = "../exercise/slab.rs")]
+mod slab;
+// Exercise 2: the watertight ray–triangle test.
+#[cfg_attr(feature = "exercise", path = "../exercise/watertight.rs")]
+mod watertight;
+
+pub use axis_box::AxisBox;
+pub use cylinder::Cylinder;
+pub use ellipsoid::Ellipsoid;
+pub use moller_trumbore::moller_trumbore;
+pub use slab::slab_test;
+pub use triangle::{Triangle, TriangleTest};
+pub use watertight::watertight;
+
 // ---------------------------------------------------------------------
 // Slow primitives: polynomial roots, the torus, the saddle, blobs.
 // ---------------------------------------------------------------------

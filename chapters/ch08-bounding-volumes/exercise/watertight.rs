@@ -1,0 +1,74 @@
+//! Exercise 2: the watertight ray–triangle test.
+use raystep_core::{DVec2, DVec3, Interval, Ray};
+
+// ANCHOR: watertight
+/// The `t` at which `ray` hits the triangle `v` within `interval`, by the
+/// watertight test of Woop, Benthin & Wald (JCGT 2(1), 2013).
+///
+/// The ray is turned into the z axis by a shear, so the question "does it
+/// pass through the triangle?" becomes "is the origin of the xy plane
+/// inside the sheared triangle?", answered by chapter 2's edge functions.
+/// Two triangles that share an edge shear its two vertices to the same
+/// numbers and compute its edge function from them alike, so they always
+/// agree on which side of the edge the ray passes: no ray leaks through.
+/// A ray exactly on an edge (an edge function exactly 0) counts for the
+/// one triangle that owns the edge (chapter 2's tie rule), and at a shared
+/// vertex for one triangle of its fan: no ray hits twice either.
+pub fn watertight(
+    v: &[DVec3; 3],
+    ray: &Ray,
+    interval: Interval,
+) -> Option<f64> {
+    // TODO:
+    // 1. kz = the axis of D's largest |component| (`max_position`),
+    //    kx = kz + 1 and ky = kz + 2 (mod 3); swap kx and ky if D[kz] < 0.
+    // 2. The shear: Sx = D[kx]/D[kz], Sy = D[ky]/D[kz], Sz = 1/D[kz].
+    // 3. For each vertex, P = V − P₀; sheared (x, y) =
+    //    (P[kx] − Sx·P[kz], P[ky] − Sy·P[kz]) and z = Sz·P[kz].
+    // 4. The edge functions at the origin, with `edge_function`:
+    //    e0 for b → c, e1 for c → a, e2 for a → b.
+    // 5. None if some eᵢ > 0 and some eᵢ < 0 (outside), or if
+    //    det = e0 + e1 + e2 is 0 (seen edge-on) or not finite.
+    // 6. For each eᵢ == 0 the ray is on that edge: None unless the
+    //    triangle owns it, `ch02::owns_boundary(from, to)` with the edge
+    //    walked as listed if det > 0, reversed if det < 0.
+    // 7. t = (e0·za + e1·zb + e2·zc) / det, if the interval contains it.
+    let _ = (v, ray, interval, edge_function);
+    todo!("ch08 exercise 2: watertight")
+}
+// ANCHOR_END: watertight
+
+// ANCHOR: edge_function
+/// Chapter 2's edge function of the edge `p → q` at the origin,
+/// `p.x·q.y − p.y·q.x`: positive if the origin is to the left of the edge,
+/// 0 on its line, with its sign exact.
+///
+/// Computed fast first. The paper falls back to higher precision where
+/// that value is exactly 0; with no wider float than f64 we fall back to
+/// Kahan's determinant ([`difference_of_products`]), and do so wherever
+/// the fast value is within its rounding error of 0, so its sign is never
+/// wrong — that is what keeps a shared *vertex* watertight as well.
+fn edge_function(p: DVec2, q: DVec2) -> f64 {
+    // TODO:
+    // 1. left = p.x·q.y, right = p.y·q.x, fast = left − right.
+    // 2. If |fast| > 2ε·(|left| + |right|) (ε = `f64::EPSILON`), its sign
+    //    is sure: return it.
+    // 3. Else return `difference_of_products(p.x, q.y, p.y, q.x)`.
+    let _ = (p, q, difference_of_products);
+    todo!("ch08 exercise 2: watertight")
+}
+// ANCHOR_END: edge_function
+
+// ANCHOR: difference_of_products
+/// `a·b − c·d` to within 2 ulps of the exact value (Kahan's algorithm
+/// with fused multiply-adds), so its sign is exact and it is 0 only when
+/// `a·b = c·d` exactly.
+fn difference_of_products(a: f64, b: f64, c: f64, d: f64) -> f64 {
+    // TODO:
+    // 1. w = c·d, and its rounding error exactly by an FMA:
+    //    error = (−c).mul_add(d, w).
+    // 2. a.mul_add(b, −w) + error.
+    let _ = (a, b, c, d);
+    todo!("ch08 exercise 2: watertight")
+}
+// ANCHOR_END: difference_of_products

@@ -1,0 +1,501 @@
+//! Exercise 1: the robust slab test, against a catalogue of the rays that
+//! break naive ones.
+use ch08::{Aabb, DVec3, Interval, Ray, slab_test};
+use proptest::prelude::*;
+use raystep_check::{Table, seeded};
+
+fn v(x: f64, y: f64, z: f64) -> DVec3 {
+    DVec3::new(x, y, z)
+}
+
+/// The boxes of the catalogue, every coordinate a short binary fraction
+/// so the expected answers below are exact: one near the origin, a thin
+/// one around 2²⁰ ≈ 1e6, and a tiny one.
+fn boxes() -> [Aabb; 3] {
+    let m = 1_048_576.0; // 2²⁰
+    let tiny = 2f64.powi(-30);
+    [
+        Aabb::new(v(-1.0, -2.0, 0.5), v(1.0, 3.0, 4.0)),
+        Aabb::new(v(m + 0.25, -m - 3.0, -0.125), v(m + 1.75, -m + 1.0, 0.125)),
+        Aabb::new(v(tiny, -4.0 * tiny, tiny), v(3.0 * tiny, tiny, 2.0 * tiny)),
+    ]
+}
+
+/// What a ray must get.
+#[derive(Clone, Copy, Debug)]
+enum Expected {
+    /// No part of the interval inside the box.
+    Miss,
+    /// Inside from `t_in` to `t_out` exactly (the exit may be pushed out
+    /// by a few ulps, never pulled in).
+    Span(f64, f64),
+    /// A hit whose interval contains t = 1 (up to a rounding of the entry
+    /// or the exit): the ray passes through a point of the boundary there.
+    Touches,
+    /// Any answer but NaN: None, or an interval inside the query interval
+    /// (a ray with NaN in it has no right answer, only wrong ones).
+    NotNan,
+}
+
+/// Is `got` a right answer?
+fn right(got: Option<Interval>, expected: Expected, query: Interval) -> bool {
+    let close = |a: f64, b: f64| {
+        a == b || (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1e-300)
+    };
+    match (expected, got) {
+        (Expected::Miss, got) => got.is_none(),
+        (Expected::Span(t_in, t_out), Some(i)) => {
+            close(i.min, t_in) && close(i.max, t_out) && i.max >= t_out
+        }
+        (Expected::Touches, Some(i)) => {
+            i.min <= 1.0 + 1e-12 && i.max >= 1.0 - 1e-12
+        }
+        (Expected::NotNan, None) => true,
+        (Expected::NotNan, Some(i)) => {
+            !i.min.is_nan()
+                && !i.max.is_nan()
+                && query.min <= i.min
+                && i.max <= query.max
+        }
+        (_, None) => false,
+    }
+}
+
+/// The slab test as it is often written: each slab's two crossings ordered
+/// by min/max, no widened exit.
+fn naive(b: &Aabb, ray: &Ray, interval: Interval) -> Option<Interval> {
+    let (mut t0, mut t1) = (interval.min, interval.max);
+    for axis in 0..3 {
+        let inverse = 1.0 / ray.direction[axis];
+        let a = (b.min[axis] - ray.origin[axis]) * inverse;
+        let c = (b.max[axis] - ray.origin[axis]) * inverse;
+        t0 = t0.max(a.min(c));
+        t1 = t1.min(a.max(c));
+    }
+    (t0 <= t1).then_some(Interval::new(t0, t1))
+}
+
+/// A point of `b`: at fraction `f[i]` of its extent along axis i.
+fn point_in(b: &Aabb, f: DVec3) -> DVec3 {
+    b.min + f * (b.max - b.min)
+}
+
+/// Fractions strictly inside, as short binary fractions.
+const INSIDE: [f64; 4] = [0.125, 0.375, 0.625, 0.875];
+/// Speeds along an axis: powers of 2, so t = distance / speed is exact.
+const SPEEDS: [f64; 3] = [1.0, 2.0, 0.25];
+
+/// The other two axes.
+fn others(axis: usize) -> [usize; 2] {
+    [(axis + 1) % 3, (axis + 2) % 3]
+}
+
+/// A direction along `axis` with speed `speed` (signed), exactly 0 on the
+/// other axes.
+fn along(axis: usize, speed: f64) -> DVec3 {
+    let mut d = DVec3::ZERO;
+    d[axis] = speed;
+    d
+}
+
+/// A case of the catalogue: its name and its rays, each with its answer.
+type Case = (&'static str, Vec<(Aabb, Ray, Expected)>);
+
+/// Rays along an axis from outside, through the box (a 5 × 4 × 4 grid of
+/// positions across it, both ways, three speeds).
+fn axis_parallel_through() -> Case {
+    let mut rays = Vec::new();
+    for b in boxes() {
+        let size = b.max - b.min;
+        for axis in 0..3 {
+            let [i, j] = others(axis);
+            for &fi in &INSIDE {
+                for &fj in &INSIDE {
+                    for gap in [1.0, 0.5 * size[axis], 1024.0] {
+                        for &speed in &SPEEDS {
+                            for sign in [1.0, -1.0] {
+                                let mut f = DVec3::ZERO;
+                                (f[i], f[j]) = (fi, fj);
+                                let mut o = point_in(&b, f);
+                                o[axis] = if sign > 0.0 {
+                                    b.min[axis] - gap
+                                } else {
+                                    b.max[axis] + gap
+                                };
+                                let ray =
+                                    Ray::new(o, along(axis, sign * speed));
+                                let expected = Expected::Span(
+                                    gap / speed,
+                                    (gap + size[axis]) / speed,
+                                );
+                                rays.push((b, ray, expected));
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    ("axis-parallel, through the box", rays)
+}
+
+/// Rays along an axis beside the box: one coordinate across the ray just
+/// outside (the next float past a face) or far outside.
+fn axis_parallel_beside() -> Case {
+    let mut rays = Vec::new();
+    for b in boxes() {
+        for axis in 0..3 {
+            let [i, j] = others(axis);
+            for &fj in &INSIDE {
+                for side in [0, 1] {
+                    for far in [false, true] {
+                        for sign in [1.0, -1.0] {
+                            let mut f = DVec3::ZERO;
+                            f[j] = fj;
+                            let mut o = point_in(&b, f);
+                            o[i] = match (side, far) {
+                                (0, false) => b.min[i].next_down(),
+                                (0, true) => b.min[i] - 5.0,
+                                (_, false) => b.max[i].next_up(),
+                                (_, true) => b.max[i] + 5.0,
+                            };
+                            o[axis] = b.min[axis] - sign * 7.0;
+                            let ray = Ray::new(o, along(axis, sign));
+                            rays.push((b, ray, Expected::Miss));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    ("axis-parallel, beside the box", rays)
+}
+
+/// Rays along an axis from inside the box: the interval starts at 0.
+fn axis_parallel_from_inside() -> Case {
+    let mut rays = Vec::new();
+    for b in boxes() {
+        let size = b.max - b.min;
+        for axis in 0..3 {
+            for &fa in &INSIDE {
+                for &fo in &INSIDE {
+                    for sign in [1.0, -1.0] {
+                        let mut o = point_in(&b, DVec3::splat(fo));
+                        o[axis] = b.min[axis] + fa * size[axis];
+                        let exit = if sign > 0.0 {
+                            b.max[axis] - o[axis]
+                        } else {
+                            o[axis] - b.min[axis]
+                        };
+                        let ray = Ray::new(o, along(axis, sign));
+                        rays.push((b, ray, Expected::Span(0.0, exit)));
+                    }
+                }
+            }
+        }
+    }
+    ("axis-parallel, from inside", rays)
+}
+
+/// Origins exactly on a slab's plane: rays lying in the plane (the
+/// 0·∞ = NaN case) through the face, along its edges, or beside it; and
+/// rays leaving the plane straight into the box or out of it.
+fn origins_on_a_slab_plane(zero: f64) -> Vec<(Aabb, Ray, Expected)> {
+    let mut rays = Vec::new();
+    for b in boxes() {
+        let size = b.max - b.min;
+        for axis in 0..3 {
+            for on_max in [false, true] {
+                let plane = if on_max { b.max[axis] } else { b.min[axis] };
+                // in the plane, moving along `across`; the third axis
+                // inside the face, on its edges, or outside it
+                for across in others(axis) {
+                    let third = 3 - axis - across;
+                    let positions = [
+                        (point_in(&b, DVec3::splat(0.375))[third], true),
+                        (b.min[third], true),
+                        (b.max[third], true),
+                        (b.max[third] + size[third], false),
+                    ];
+                    for (at, hits) in positions {
+                        for &speed in &SPEEDS {
+                            for sign in [1.0, -1.0] {
+                                let mut o = DVec3::ZERO;
+                                o[axis] = plane;
+                                o[third] = at;
+                                o[across] = if sign > 0.0 {
+                                    b.min[across] - 2.0
+                                } else {
+                                    b.max[across] + 2.0
+                                };
+                                let mut d = DVec3::splat(zero);
+                                d[across] = sign * speed;
+                                let expected = if hits {
+                                    Expected::Span(
+                                        2.0 / speed,
+                                        (2.0 + size[across]) / speed,
+                                    )
+                                } else {
+                                    Expected::Miss
+                                };
+                                rays.push((b, Ray::new(o, d), expected));
+                            }
+                        }
+                    }
+                }
+                // on the face, moving straight in (through the box) or out
+                // (touching it at t = 0 only)
+                let mut o = point_in(&b, DVec3::splat(0.625));
+                o[axis] = plane;
+                for inward in [true, false] {
+                    let sign = if inward == on_max { -1.0 } else { 1.0 };
+                    let mut d = DVec3::splat(zero);
+                    d[axis] = sign;
+                    let t_out = if inward { size[axis] } else { 0.0 };
+                    rays.push((b, Ray::new(o, d), Expected::Span(0.0, t_out)));
+                }
+            }
+        }
+    }
+    rays
+}
+
+/// SplitMix64: numbers in [0, 1) from a fixed seed.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// An integer in [−n, n] other than 0, as a float.
+    fn offset(&mut self, n: f64) -> f64 {
+        loop {
+            let k = (self.next() * (2.0 * n + 1.0)).floor() - n;
+            if k != 0.0 {
+                return k;
+            }
+        }
+    }
+}
+
+/// Rays through points of the box's edges and corners, aimed from far
+/// away (up to 1000 units, integer offsets, so the ray passes exactly
+/// through its target at t = 1): half of them only touch the box there.
+fn edges_and_corners() -> Case {
+    let mut rng = Rng(0x51AB);
+    let mut rays = Vec::new();
+    for b in boxes() {
+        for k in 0..6000 {
+            // a point on an edge (two coordinates pinned to faces) or a
+            // corner (three), the others at a fraction n/1024 of the box
+            let mut f = DVec3::new(
+                (rng.next() * 1024.0).floor() / 1024.0,
+                (rng.next() * 1024.0).floor() / 1024.0,
+                (rng.next() * 1024.0).floor() / 1024.0,
+            );
+            let pinned = if k % 4 == 0 { 3 } else { 2 };
+            for n in 0..pinned {
+                f[(k + n) % 3] = if rng.next() < 0.5 { 0.0 } else { 1.0 };
+            }
+            let target = point_in(&b, f);
+            let scale = [1.0, 30.0, 1000.0][k % 3];
+            let offset = DVec3::new(
+                rng.offset(scale),
+                rng.offset(scale),
+                rng.offset(scale),
+            );
+            let from = target + offset;
+            assert_eq!(target - from, -offset, "an inexact direction");
+            rays.push((b, Ray::new(from, -offset), Expected::Touches));
+        }
+    }
+    ("through edges and corners, from far away", rays)
+}
+
+/// Rays with −0 and +0 components: the cases above with every zero of the
+/// direction made −0.
+fn signed_zeros() -> Case {
+    let mut rays = origins_on_a_slab_plane(-0.0);
+    for (b, ray, expected) in axis_parallel_through()
+        .1
+        .into_iter()
+        .chain(axis_parallel_beside().1)
+        .chain(axis_parallel_from_inside().1)
+    {
+        let d = ray.direction;
+        let d = DVec3::select(d.cmpeq(DVec3::ZERO), DVec3::splat(-0.0), d);
+        rays.push((b, Ray::new(ray.origin, d), expected));
+    }
+    ("direction components of −0", rays)
+}
+
+/// Rays with NaN in the origin, the direction or both, in one to three
+/// components.
+fn nan_components() -> Case {
+    let mut rays = Vec::new();
+    for b in boxes() {
+        let inside = point_in(&b, DVec3::splat(0.5));
+        for mask in 1..8u32 {
+            let nan = |p: DVec3| {
+                let mut p = p;
+                for axis in 0..3 {
+                    if mask & (1 << axis) != 0 {
+                        p[axis] = f64::NAN;
+                    }
+                }
+                p
+            };
+            let o = b.min - 1.0;
+            for d in [v(1.0, 1.0, 1.0), v(0.0, 0.0, 1.0), v(-1.0, 2.0, -0.0)] {
+                for ray in [
+                    Ray::new(nan(o), d),
+                    Ray::new(o, nan(d)),
+                    Ray::new(nan(inside), nan(d)),
+                    Ray::new(nan(inside), d),
+                ] {
+                    rays.push((b, ray, Expected::NotNan));
+                }
+            }
+        }
+    }
+    ("NaN components", rays)
+}
+
+/// The stability catalogue, counted: every ray's answer against the one
+/// constructed for it, for `slab_test` and for the naive slab test. The
+/// robust test is never wrong; the naive one fails on origins on a slab
+/// plane (it turns 0·∞ = NaN into ±∞ and misses or answers [∞, ∞]) and
+/// on rays that only touch an edge or a corner (rounding puts the entry
+/// past the exit).
+#[test]
+fn stability_catalogue() {
+    let cases = [
+        axis_parallel_through(),
+        axis_parallel_beside(),
+        axis_parallel_from_inside(),
+        ("origin on a slab plane", origins_on_a_slab_plane(0.0)),
+        edges_and_corners(),
+        signed_zeros(),
+        nan_components(),
+    ];
+    let mut table =
+        Table::new(&["case", "rays", "wrong: slab_test", "wrong: naive"]);
+    for (name, rays) in &cases {
+        let (mut wrong, mut naive_wrong) = (0, 0);
+        for &(b, ray, expected) in rays {
+            let query = Interval::FORWARD;
+            let got = slab_test(&b, &ray, query);
+            if !right(got, expected, query) {
+                wrong += 1;
+                eprintln!(
+                    "{name}: box {b:?}, ray {ray:?}: expected {expected:?}, \
+                     got {got:?}"
+                );
+            }
+            naive_wrong +=
+                usize::from(!right(naive(&b, &ray, query), expected, query));
+        }
+        table.row(&[
+            name.to_string(),
+            rays.len().to_string(),
+            wrong.to_string(),
+            naive_wrong.to_string(),
+        ]);
+        assert_eq!(
+            wrong, 0,
+            "{name}: expected no wrong answer from slab_test (the rays are \
+             printed above)"
+        );
+    }
+    insta::assert_snapshot!(table.to_string());
+}
+
+/// An empty box is never hit; the box of everything is hit all along.
+#[test]
+fn empty_and_unbounded_boxes() {
+    let ray = Ray::new(v(0.3, 0.2, 0.1), v(1.0, 2.0, 3.0));
+    assert_eq!(slab_test(&Aabb::EMPTY, &ray, Interval::UNIVERSE), None);
+    assert_eq!(
+        slab_test(&Aabb::EVERYTHING, &ray, Interval::FORWARD),
+        Some(Interval::FORWARD)
+    );
+    let b = boxes()[0];
+    let through = Ray::new(v(0.0, 0.0, -1.0), v(0.0, 0.0, 1.0));
+    assert_eq!(
+        slab_test(&b, &through, Interval::new(0.0, 1.0)),
+        None,
+        "the box starts at t = 1.5, past the interval's max 1"
+    );
+}
+
+/// A ray with components of both signs and awkward sizes.
+fn ray_strategy() -> impl Strategy<Value = Ray> {
+    let coordinate = || -20.0..20.0f64;
+    (
+        (coordinate(), coordinate(), coordinate()),
+        (coordinate(), coordinate(), coordinate()),
+    )
+        .prop_map(|((x, y, z), (a, b, c))| Ray::new(v(x, y, z), v(a, b, c)))
+}
+
+/// A box with corners in [−10, 10]³.
+fn box_strategy() -> impl Strategy<Value = Aabb> {
+    let coordinate = || -10.0..10.0f64;
+    (
+        (coordinate(), coordinate(), coordinate()),
+        (coordinate(), coordinate(), coordinate()),
+    )
+        .prop_map(|((x, y, z), (a, b, c))| Aabb::new(v(x, y, z), v(a, b, c)))
+}
+
+proptest! {
+    #![proptest_config(seeded(1024))]
+
+    /// A ray aimed at a point inside the box hits it, and the interval it
+    /// returns contains the point's t (= 1).
+    #[test]
+    fn aimed_inside_hits(
+        b in box_strategy(),
+        f in (0.0..1.0f64, 0.0..1.0f64, 0.0..1.0f64),
+        from in ray_strategy(),
+    ) {
+        let target = point_in(&b, DVec3::new(f.0, f.1, f.2));
+        let ray = Ray::new(from.origin * 10.0, target - from.origin * 10.0);
+        let got = slab_test(&b, &ray, Interval::FORWARD);
+        prop_assert!(
+            got.is_some_and(|i| i.min <= 1.0 + 1e-12 && i.max >= 1.0 - 1e-12),
+            "box {b:?}, ray {ray:?} aimed at {target} inside it (t = 1): \
+             expected an interval containing 1, got {got:?}"
+        );
+    }
+
+    /// The same answers as the accelerators' `Aabb::hit`, on any ray and
+    /// interval: hit or miss alike, and the same entry and exit.
+    #[test]
+    fn agrees_with_aabb_hit(
+        b in box_strategy(),
+        ray in ray_strategy(),
+        (t0, t1) in (-5.0..5.0f64, 0.0..20.0f64),
+    ) {
+        let query = Interval::new(t0, t0 + t1);
+        let (got, reference) = (slab_test(&b, &ray, query), b.hit(&ray, query));
+        let same = match (got, reference) {
+            (None, None) => true,
+            (Some(g), Some(r)) => {
+                (g.min - r.min).abs() <= 1e-12 * r.min.abs().max(1.0)
+                    && (g.max - r.max).abs() <= 1e-12 * r.max.abs().max(1.0)
+            }
+            _ => false,
+        };
+        prop_assert!(
+            same,
+            "box {b:?}, ray {ray:?}, interval {query:?}: expected \
+             {reference:?} (Aabb::hit), got {got:?}"
+        );
+    }
+}
