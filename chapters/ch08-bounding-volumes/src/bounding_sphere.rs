@@ -19,6 +19,19 @@ impl BoundingSphere {
         }
     }
 
+    /// The circumsphere of the points' box: the quick bounding sphere, to
+    /// compare with a tight one ([`sphere_of_points`](crate::sphere_of_points)).
+    /// No points: radius 0 at the origin.
+    pub fn around_points_by_box(points: &[DVec3]) -> BoundingSphere {
+        if points.is_empty() {
+            return BoundingSphere {
+                center: DVec3::ZERO,
+                radius: 0.0,
+            };
+        }
+        BoundingSphere::around_box(&Aabb::around(points.iter().copied()))
+    }
+
     /// Is `p` inside or on it?
     pub fn contains(&self, p: DVec3) -> bool {
         (p - self.center).length_squared() <= self.radius * self.radius
