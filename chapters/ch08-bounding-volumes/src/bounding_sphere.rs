@@ -48,8 +48,8 @@ impl BoundingSphere {
         let across = oc - (half_b / a) * ray.direction;
         let discriminant =
             a * (self.radius * self.radius - across.length_squared());
-        if !(discriminant >= 0.0) {
-            return None;
+        if discriminant.is_nan() || discriminant < 0.0 {
+            return None; // a miss (NaN: a ray with a NaN in it)
         }
         let root = discriminant.sqrt();
         let (t0, t1) = ((-half_b - root) / a, (-half_b + root) / a);

@@ -2,7 +2,9 @@
 //! circumsphere and against the smallest sphere where it is known.
 use std::path::PathBuf;
 
-use ch08::{BoundingSphere, DVec3, sphere_of_points};
+use ch08::{
+    BoundingSphere, DVec3, sketch_bounds, sketch_shapes, sphere_of_points,
+};
 use proptest::prelude::*;
 use raystep_check::{Table, num_places, seeded};
 use raystep_core::glam::DQuat;
@@ -313,6 +315,39 @@ fn the_bunny() {
         format!("{}…{}", num_places(half, 3), num_places(FACTOR * half, 3)),
     ]);
     insta::assert_snapshot!(table.to_string());
+}
+
+/// The lecture's sketch, in the plane z = 0: each shape inside its box
+/// (flat: z from 0 to 0) and its two circles, the tight one within the
+/// factor of the smallest (known for these shapes), the box's circle
+/// through the box's corners.
+#[test]
+fn the_lecture_sketch() {
+    let smallest = [
+        ("circle", 1.0),
+        ("square", 0.8 * 2f64.sqrt()),
+        (
+            "thin rectangle",
+            0.5 * (2.4f64.powi(2) + 0.3f64.powi(2)).sqrt(),
+        ),
+        ("capsule", 1.5 + 0.35),
+    ];
+    let shapes = sketch_shapes();
+    assert_eq!(shapes.len(), smallest.len());
+    for ((name, points), (expected_name, r_min)) in shapes.iter().zip(smallest)
+    {
+        assert_eq!(*name, expected_name);
+        let (b, tight, by_box) = sketch_bounds(points);
+        assert!(
+            points.iter().all(|&p| p.z == 0.0 && b.contains(p)),
+            "{name}"
+        );
+        assert_eq!((b.min.z, b.max.z), (0.0, 0.0), "{name}");
+        assert_eq!(by_box, BoundingSphere::around_box(&b), "{name}");
+        assert_holds_all(name, points, &by_box);
+        assert!(tight.center.z.abs() < 1e-12, "{name}: {tight:?}");
+        check(name, points, r_min);
+    }
 }
 
 proptest! {
