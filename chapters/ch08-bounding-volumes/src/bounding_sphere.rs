@@ -20,8 +20,8 @@ impl BoundingSphere {
     }
 
     /// The circumsphere of the points' box: the quick bounding sphere, to
-    /// compare with a tight one ([`sphere_of_points`](crate::sphere_of_points)).
-    /// No points: radius 0 at the origin.
+    /// compare with a tight one ([`crate::sphere_of_points`]). No points:
+    /// radius 0 at the origin.
     pub fn around_points_by_box(points: &[DVec3]) -> BoundingSphere {
         if points.is_empty() {
             return BoundingSphere {

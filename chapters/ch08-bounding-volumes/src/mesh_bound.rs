@@ -57,22 +57,30 @@ impl TriangleMesh {
     }
 }
 
-impl Shape for TriangleMesh {
-    // ANCHOR: mesh_intersect
-    /// The lecture's closest-hit loop over the triangles: every ray tests
-    /// every one of them.
-    fn intersect(&self, ray: &Ray, interval: Interval) -> Option<Hit> {
-        let mut closest = None;
-        let mut interval = interval;
-        for triangle in &self.triangles {
-            if let Some(hit) = triangle.intersect(ray, interval) {
-                interval = interval.with_max(hit.t); // only closer ones now
-                closest = Some(hit);
-            }
+// ANCHOR: mesh_intersect
+/// The lecture's closest-hit loop over a mesh's triangles: every ray tests
+/// every one of them.
+fn closest_triangle_hit(
+    triangles: &[MeshTriangle],
+    ray: &Ray,
+    interval: Interval,
+) -> Option<Hit> {
+    let mut closest = None;
+    let mut interval = interval;
+    for triangle in triangles {
+        if let Some(hit) = triangle.intersect(ray, interval) {
+            interval = interval.with_max(hit.t); // only closer ones now
+            closest = Some(hit);
         }
-        closest
     }
-    // ANCHOR_END: mesh_intersect
+    closest
+}
+// ANCHOR_END: mesh_intersect
+
+impl Shape for TriangleMesh {
+    fn intersect(&self, ray: &Ray, interval: Interval) -> Option<Hit> {
+        closest_triangle_hit(&self.triangles, ray, interval)
+    }
 
     fn bounds(&self) -> Aabb {
         self.bounds
