@@ -19,6 +19,19 @@ impl BoundingSphere {
         }
     }
 
+    /// The circumsphere of the points' box: the quick bounding sphere, to
+    /// compare with a tight one ([`crate::sphere_of_points`]). No points:
+    /// radius 0 at the origin.
+    pub fn around_points_by_box(points: &[DVec3]) -> BoundingSphere {
+        if points.is_empty() {
+            return BoundingSphere {
+                center: DVec3::ZERO,
+                radius: 0.0,
+            };
+        }
+        BoundingSphere::around_box(&Aabb::around(points.iter().copied()))
+    }
+
     /// Is `p` inside or on it?
     pub fn contains(&self, p: DVec3) -> bool {
         (p - self.center).length_squared() <= self.radius * self.radius
@@ -35,8 +48,8 @@ impl BoundingSphere {
         let across = oc - (half_b / a) * ray.direction;
         let discriminant =
             a * (self.radius * self.radius - across.length_squared());
-        if !(discriminant >= 0.0) {
-            return None;
+        if discriminant.is_nan() || discriminant < 0.0 {
+            return None; // a miss (NaN: a ray with a NaN in it)
         }
         let root = discriminant.sqrt();
         let (t0, t1) = ((-half_b - root) / a, (-half_b + root) / a);

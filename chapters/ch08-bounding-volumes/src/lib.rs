@@ -51,6 +51,28 @@ pub use watertight::watertight;
 // Bounding volumes: spheres around point sets, tightness, meshes.
 // ---------------------------------------------------------------------
 
+mod bounded;
+mod lecture_sketch;
+mod mesh_bound;
+mod random_lines;
+mod tightness;
+
+// Exercise 4: a bounding sphere of a point set.
+#[cfg_attr(feature = "exercise", path = "../exercise/sphere_of_points.rs")]
+mod sphere_of_points;
+
+pub use bounded::{Bound, BoundKind, Bounded, TestCounts, bounded_intersect};
+pub use lecture_sketch::{sketch_bounds, sketch_shapes};
+pub use mesh_bound::{
+    MeshBoxCounts, MeshTriangle, TriangleMesh, camera_rays, incoherent_rays,
+    mesh_behind_box, mesh_triangle,
+};
+pub use random_lines::{RandomLines, SplitMix64};
+pub use sphere_of_points::sphere_of_points;
+pub use tightness::{
+    TIGHTNESS_SEED, Tightness, measure_tightness, sampling_sphere, tightness,
+};
+
 // ---------------------------------------------------------------------
 // Scene files: every primitive from TOML.
 // ---------------------------------------------------------------------
