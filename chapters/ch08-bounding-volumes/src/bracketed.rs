@@ -25,7 +25,7 @@ pub fn roots_in(c: &[f64], a: f64, b: f64) -> Vec<f64> {
     // Step 1: drop zero leading coefficients; a constant has no roots.
     let degree = c.iter().rposition(|&ci| ci != 0.0).unwrap_or(0);
     let c = &c[..=degree];
-    if degree == 0 || !(a <= b) {
+    if degree == 0 || a.is_nan() || b.is_nan() || a > b {
         return Vec::new();
     }
     // Step 2: the derivative's roots cut [a, b] into monotone pieces.

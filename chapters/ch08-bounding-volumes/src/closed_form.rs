@@ -11,6 +11,7 @@
 //! where the coefficients are huge and cancel (a ray from far away) the
 //! rounding swamps the answer. `tests/torus_solvers.rs` counts the roots
 //! it loses; [`roots_in`](crate::roots_in) is the robust method.
+use ch02::zero_within_rounding;
 
 // ANCHOR: quadratic
 /// The real roots of c₀ + c₁t + c₂t², in the stable form.
@@ -96,7 +97,11 @@ pub fn quartic_roots(c: [f64; 5]) -> Vec<f64> {
     let q = d - a * b / 2.0 + a2 * a / 8.0;
     let r = e - a * d / 4.0 + a2 * b / 16.0 - 3.0 * a2 * a2 / 256.0;
     let mut ys = Vec::new();
-    if q == 0.0 {
+    // q is zero when its rounding error is as large as it (chapter 2's
+    // test): then the resolvent's root m is about 0 and the division by
+    // √2m in step 4 would blow the rounding up.
+    let q_terms = d.abs() + (a * b).abs() / 2.0 + (a2 * a).abs() / 8.0;
+    if zero_within_rounding(q, q_terms) {
         // Step 3a: no odd term: a quadratic in z = y².
         for z in quadratic_roots([r, p, 1.0]) {
             if z >= 0.0 {

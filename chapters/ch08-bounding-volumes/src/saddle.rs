@@ -83,22 +83,49 @@ fn saddle_normal(size: f64, p: DVec3) -> DVec3 {
 }
 // ANCHOR_END: saddle_normal
 
-/// The saddle as an object of a scene: the cubic's first root inside the
-/// clip box, by the bracketed method from the box's entry.
+// ANCHOR: saddle_roots
+/// The roots of the cubic in `interval` whose points lie in the clip
+/// square, sorted: the bracketed method from the clip box's entry.
+fn saddle_roots(
+    size: f64,
+    ray: &Ray,
+    center: DVec3,
+    interval: Interval,
+) -> Vec<f64> {
+    // Step 1: clip the ray to the box, grown by 1% of s so that no root
+    // sits on an end of the interval (where p ≈ 0 has no reliable sign).
+    let half = 1.01 * DVec3::new(size, 2.0 * size, size);
+    let Some(inside) = Aabb::new(-half, half)
+        .hit(&Ray::new(ray.origin - center, ray.direction), interval)
+    else {
+        return Vec::new();
+    };
+    // Step 2: the cubic from the entry point, in the saddle's frame.
+    let entry = Ray::new(ray.at(inside.min) - center, ray.direction);
+    let cubic = saddle_cubic(size, &entry);
+    // Step 3: its roots in the box, kept where the point is in the
+    // square |x|, |z| ≤ s, and shifted back to the ray's t.
+    roots_in(&cubic, 0.0, inside.size())
+        .into_iter()
+        .filter(|&s| {
+            let p = entry.at(s);
+            p.x.abs() <= size && p.z.abs() <= size
+        })
+        .map(|s| inside.min + s)
+        .filter(|&t| interval.contains(t))
+        .collect()
+}
+// ANCHOR_END: saddle_roots
+
+/// The saddle as an object of a scene: the first root of its cubic in
+/// the clip square.
 impl Shape for Saddle {
     fn intersect(&self, ray: &Ray, interval: Interval) -> Option<Hit> {
-        // Step 1: clip the ray to the box (no hits outside it).
-        let inside = self.clip_box().hit(ray, interval)?;
-        // Step 2: the cubic from the entry point, in the saddle's frame.
-        let entry = Ray::new(ray.at(inside.min) - self.center, ray.direction);
-        let cubic = saddle_cubic(self.size, &entry);
-        // Step 3: its first root in the box, shifted back to the ray's t.
-        let t = roots_in(&cubic, 0.0, inside.size())
+        let t = saddle_roots(self.size, ray, self.center, interval)
             .into_iter()
-            .map(|s| inside.min + s)
-            .find(|&t| interval.contains(t))?;
+            .next()?;
         let point = ray.at(t);
-        let normal = saddle_normal(self.size, entry.at(t - inside.min));
+        let normal = saddle_normal(self.size, point - self.center);
         Some(Hit { t, point, normal })
     }
 

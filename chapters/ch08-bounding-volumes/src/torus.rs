@@ -113,13 +113,13 @@ impl Torus {
     /// own t, sorted (for tests and figures: [`Shape::intersect`] keeps
     /// the first one).
     pub fn roots(&self, ray: &Ray) -> Vec<f64> {
-        self.roots_within(&self.to_local(ray), Interval::FORWARD)
+        self.roots_within(&self.local_ray(ray), Interval::FORWARD)
     }
 
     /// The quartic f(t) along `ray` in the ray's own t, lowest degree
     /// first (the one [`TorusSolver::ClosedForm`] solves; for plots).
     pub fn quartic_along(&self, ray: &Ray) -> [f64; 5] {
-        torus_quartic(self.major, self.minor, &self.to_local(ray))
+        torus_quartic(self.major, self.minor, &self.local_ray(ray))
     }
 
     /// The outward unit normal at a point on the surface.
@@ -145,7 +145,7 @@ impl Torus {
     }
 
     /// The ray in the torus's frame (the same t: the frame is rigid).
-    fn to_local(&self, ray: &Ray) -> Ray {
+    fn local_ray(&self, ray: &Ray) -> Ray {
         let d = ray.direction;
         Ray::new(
             self.local_point(ray.origin),
@@ -178,9 +178,12 @@ fn bracketed_roots(
     ray: &Ray,
     interval: Interval,
 ) -> Vec<f64> {
-    // Step 1: clip the ray to the torus's box: there are no roots
-    // outside it, and the box gives the interval to search.
-    let (reach, r) = (major + minor, minor);
+    // Step 1: clip the ray to the torus's box, grown by 1% of r: there
+    // are no roots outside it. (The tight box touches the torus, and a
+    // root on an end of the interval has p ≈ 0 there, a sign the method
+    // cannot trust: a ray onto the top of the tube would lose its hit.)
+    let pad = 0.01 * minor;
+    let (reach, r) = (major + minor + pad, minor + pad);
     let bounds =
         Aabb::new(DVec3::new(-reach, -r, -reach), DVec3::new(reach, r, reach));
     let Some(inside) = bounds.hit(ray, interval) else {
@@ -223,7 +226,7 @@ fn torus_normal(major: f64, minor: f64, p: DVec3) -> DVec3 {
 /// A torus as an object of a scene: the first root of its solver.
 impl Shape for Torus {
     fn intersect(&self, ray: &Ray, interval: Interval) -> Option<Hit> {
-        let local = self.to_local(ray);
+        let local = self.local_ray(ray);
         let t = *self.roots_within(&local, interval).first()?;
         let point = ray.at(t);
         let n = torus_normal(self.major, self.minor, local.at(t));
