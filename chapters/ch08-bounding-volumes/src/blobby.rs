@@ -1,7 +1,7 @@
 //! Blobby objects: metaballs with Wyvill's soft-object field.
 use raystep_core::{Aabb, DVec3, Hit, Interval, Ray, Shape};
 
-use crate::{BoundingSphere, Primitive, multiply, roots_in};
+use crate::{BoundingSphere, Primitive, horner, multiply, roots_in};
 
 /// One ball of a [`Blobby`]: its field is `strength` at the centre and
 /// falls smoothly to 0 at `radius`.
@@ -83,7 +83,7 @@ impl Blobby {
             .map(|b| {
                 let q = (p - b.center).length_squared() / (b.radius * b.radius);
                 if q < 1.0 {
-                    b.strength * crate::horner(&WYVILL, q)
+                    b.strength * horner(&WYVILL, q)
                 } else {
                     0.0
                 }

@@ -178,8 +178,8 @@ fn bracketed_roots(
     ray: &Ray,
     interval: Interval,
 ) -> Vec<f64> {
-    // Step 1: clip the ray to the torus's box, grown by 1% of r: there
-    // are no roots outside it. (The tight box touches the torus, and a
+    // Step 1: clip the ray to the torus's box (axis-aligned in its own
+    // frame), grown by 1% of r: there are no roots outside it. (The tight box touches the torus, and a
     // root on an end of the interval has p ≈ 0 there, a sign the method
     // cannot trust: a ray onto the top of the tube would lose its hit.)
     let pad = 0.01 * minor;
@@ -238,8 +238,8 @@ impl Shape for Torus {
     /// R·√(1 − (n·eᵢ)²) from the centre, and the tube r further.
     fn bounds(&self) -> Aabb {
         let n = self.axis;
-        let half = (DVec3::ONE - n * n).max(DVec3::ZERO).powf(0.5) * self.major
-            + DVec3::splat(self.minor);
+        let circle = (DVec3::ONE - n * n).max(DVec3::ZERO).map(f64::sqrt);
+        let half = self.major * circle + DVec3::splat(self.minor);
         Aabb::new(self.center - half, self.center + half)
     }
 }

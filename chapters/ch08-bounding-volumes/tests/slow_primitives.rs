@@ -302,9 +302,9 @@ fn saddle_height(s: f64, x: f64, z: f64) -> (f64, DVec3) {
 }
 
 /// Straight down onto the saddle at a grid of points of its square: the
-/// hit is at the height of the formula with the graph's normal. Beside
-/// the square the ray misses; along the x axis the ray meets y = x³/s² at
-/// x = ∛(y·s²).
+/// hit is at the height of the formula with the graph's normal; also by
+/// the corners where the surface touches its box. Beside the square the
+/// ray misses; along the x axis the ray meets y = x³/s² at x = ∛(y·s²).
 #[test]
 fn saddle_analytic_hits() {
     let (center, s) = (DVec3::new(1.0, 2.0, 3.0), 2.0);
@@ -321,6 +321,26 @@ fn saddle_analytic_hits() {
                 10.0 - y
             );
             assert!(near_vec(hit.normal, normal, 1e-12), "{hit:?}");
+        }
+    }
+    // Near the corners where the surface touches the top and the bottom
+    // of its box (y = ±2s at x = ∓s, z = ±s): the root is at an end of
+    // the box's interval, and still found.
+    for k in 1..=15 {
+        let inset = 2.0 - 10f64.powi(-k);
+        for (x, z, down) in [(-inset, inset, true), (inset, -inset, false)] {
+            let (y, _) = saddle_height(s, x, z);
+            let (from, d) = if down { (10.0, -1.0) } else { (-10.0, 1.0) };
+            let ray = Ray::new(
+                center + DVec3::new(x, from, z),
+                DVec3::new(0.0, d, 0.0),
+            );
+            let hit = saddle.intersect(&ray, Interval::FORWARD);
+            assert!(
+                hit.is_some_and(|h| near(h.t, (from - y).abs(), 1e-9)),
+                "at the corner ({x}, {z}): expected t = {}, got {hit:?}",
+                (from - y).abs()
+            );
         }
     }
     let beside = Ray::new(center + DVec3::new(2.1, 10.0, 0.0), DVec3::NEG_Y);
