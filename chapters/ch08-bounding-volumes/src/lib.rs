@@ -47,6 +47,24 @@ pub use watertight::watertight;
 // Slow primitives: polynomial roots, the torus, the saddle, blobs.
 // ---------------------------------------------------------------------
 
+mod blobby;
+mod bracketed;
+mod closed_form;
+mod polynomial;
+mod saddle;
+mod torus;
+// Exercise 3: the torus quartic's coefficients.
+#[cfg_attr(feature = "exercise", path = "../exercise/torus_quartic.rs")]
+mod torus_quartic;
+
+pub use blobby::{Ball, Blobby, WYVILL};
+pub use bracketed::roots_in;
+pub use closed_form::{cubic_roots, quadratic_roots, quartic_roots};
+pub use polynomial::{derivative, horner, multiply};
+pub use saddle::{Saddle, saddle_cubic};
+pub use torus::{Torus, TorusSolver};
+pub use torus_quartic::torus_quartic;
+
 // ---------------------------------------------------------------------
 // Bounding volumes: spheres around point sets, tightness, meshes.
 // ---------------------------------------------------------------------
