@@ -94,3 +94,7 @@ pub use tightness::{
 // ---------------------------------------------------------------------
 // Scene files: every primitive from TOML.
 // ---------------------------------------------------------------------
+
+mod scene_shapes;
+
+pub use scene_shapes::{load, shape, world};

@@ -3,20 +3,22 @@
 //! box around the whole mesh turns most missing rays away with one test;
 //! the rays that hit the box still test every triangle (part 2's
 //! hierarchies fix that).
-use ch02::Polygon;
 use raystep_core::{Aabb, Camera, DVec3, Hit, Interval, Ray, Shape};
 use raystep_scene::Mesh;
 
-use crate::{Bounded, BoundingSphere, SplitMix64, TestCounts};
+use crate::{
+    Bounded, BoundingSphere, SplitMix64, TestCounts, Triangle, TriangleTest,
+};
 
-/// The triangle meshes are made of: for now chapter 2's polygon with
-/// three corners.
-pub type MeshTriangle = Polygon;
+/// The triangle meshes are made of: the chapter's triangle with the
+/// watertight test, so that no ray slips between two triangles of a
+/// closed mesh.
+pub type MeshTriangle = Triangle;
 
 /// The mesh triangle with these corners, or None if they fix no plane
 /// (zero area). Every mesh triangle is made here.
 pub fn mesh_triangle(corners: [DVec3; 3]) -> Option<MeshTriangle> {
-    Polygon::new(corners.to_vec()).ok()
+    Triangle::new(corners, TriangleTest::Watertight).ok()
 }
 
 /// A mesh as one object: its triangles, each tested in turn.
@@ -191,4 +193,21 @@ pub fn mesh_behind_box(mesh: &TriangleMesh, rays: &[Ray]) -> MeshBoxCounts {
     }
     counts.triangle_tests_with_box = tests.object * per_ray;
     counts
+}
+
+impl crate::Primitive for TriangleMesh {
+    fn name(&self) -> &'static str {
+        "mesh"
+    }
+
+    /// The tight sphere around its corners
+    /// ([`sphere_of_points`](crate::sphere_of_points)).
+    fn bounding_sphere(&self) -> BoundingSphere {
+        let corners: Vec<DVec3> = self
+            .triangles
+            .iter()
+            .flat_map(|t| t.vertices().to_vec())
+            .collect();
+        crate::sphere_of_points(&corners)
+    }
 }

@@ -12,6 +12,7 @@ pub const CHAPTERS: &[&Chapter] = &[
     &ch05_figures::CHAPTER,
     &ch06_figures::CHAPTER,
     &ch07_figures::CHAPTER,
+    &ch08_figures::CHAPTER,
 ];
 
 /// The chapter the user named (`1`, `01`, `ch01`, …), among `chapters`.

@@ -196,7 +196,7 @@ fn aabb(b: RawBox, cx: &Context) -> Result<Shape, SceneError> {
 
 fn cylinder(c: RawCylinder, cx: &Context) -> Result<Shape, SceneError> {
     let (base, top) = (c.base.0, c.top.get_ref().0);
-    if !(top - base).try_normalize().is_some() {
+    if (top - base).try_normalize().is_none() {
         return Err(cx.error(
             c.top.span(),
             format!(

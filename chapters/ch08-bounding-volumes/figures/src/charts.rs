@@ -1,0 +1,259 @@
+//! Chapter 8's two charts, drawn from `book/src/figures/ch08/costs.csv` and
+//! `bounding.csv` (written by `raystep measure`): what one ray–primitive
+//! test costs against the sphere's, and what a bound saves.
+use raystep_figure::plotters::prelude::*;
+use raystep_figure::plotters::style::text_anchor::{HPos, Pos, VPos};
+use raystep_figure::{ChartError, Figure, chart, font, measured};
+
+use crate::rows::{BoundingRow, CostRow};
+
+/// Hits and misses; the bound kinds (Okabe–Ito, colour-blind safe).
+const HIT: RGBColor = RGBColor(213, 94, 0);
+const MISS: RGBColor = RGBColor(0, 114, 178);
+const GREY: RGBColor = RGBColor(120, 120, 120);
+
+/// The bound kinds of `bounding.csv` on the chart, with their colours and
+/// legend names.
+pub const BOUND_KINDS: [(&str, RGBColor, &str); 3] = [
+    ("box", RGBColor(0, 114, 178), "its box"),
+    ("sphere", RGBColor(213, 94, 0), "its own bounding sphere"),
+    (
+        "box's sphere",
+        RGBColor(0, 158, 115),
+        "the sphere around its box",
+    ),
+];
+
+/// A ratio as the axis shows it: `0.25`, `2`, `50`.
+fn ratio_label(v: f64) -> String {
+    if v >= 1.0 {
+        format!("{v:.0}")
+    } else {
+        format!("{v:.2}")
+    }
+}
+
+/// The names in `rows`, in file order, without repeats.
+fn names<'a>(rows: impl Iterator<Item = &'a str>) -> Vec<&'a str> {
+    let mut found: Vec<&str> = Vec::new();
+    for name in rows {
+        if !found.contains(&name) {
+            found.push(name);
+        }
+    }
+    found
+}
+
+/// The axis over `values` (positive ratios), padded, at least 0.5 … 2.
+fn ratio_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
+    let (lo, hi) = values
+        .filter(|v| *v > 0.0 && v.is_finite())
+        .fold((0.5f64, 2.0f64), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    (lo / 1.3)..(hi * 1.3)
+}
+
+/// "Fast vs slow": each primitive's test against the sphere's.
+pub fn costs_chart() -> Result<Figure, ChartError> {
+    let rows: Vec<CostRow> = measured("ch08", "costs.csv")?;
+    let sphere = |rays: &str| {
+        rows.iter()
+            .find(|r| r.primitive == "sphere" && r.rays == rays)
+            .map(|r| r.nanos)
+            .ok_or_else(|| format!("costs.csv: no sphere row for {rays}"))
+    };
+    let (hit, miss) = (sphere("hit")?, sphere("miss")?);
+    let primitives = names(rows.iter().map(|r| r.primitive.as_str()));
+    let height = 120 + 30 * primitives.len() as u32;
+    chart(
+        "costs-chart",
+        "One ray–primitive test, relative to the sphere's (log scale; hits against the sphere's hits, misses against its misses). Measured on this machine, median of several rounds; the numbers at the right are the nanoseconds per test (hit / miss).",
+        900,
+        height,
+        |area| draw_costs(area, &rows, &primitives, hit, miss),
+    )
+}
+
+fn draw_costs(
+    area: &raystep_figure::ChartArea,
+    rows: &[CostRow],
+    primitives: &[&str],
+    sphere_hit: f64,
+    sphere_miss: f64,
+) -> Result<(), ChartError> {
+    let (legend, plot) = area.split_vertically(40);
+    for (i, (name, colour)) in
+        [("rays that hit it", HIT), ("rays that miss it", MISS)]
+            .into_iter()
+            .enumerate()
+    {
+        let x = 230 + 260 * i as i32;
+        legend.draw(&Circle::new((x, 20), 6, colour.filled()))?;
+        legend.draw(&Text::new(name, (x + 14, 11), font(16.0)))?;
+    }
+    let ratio = |r: &CostRow| {
+        r.nanos
+            / if r.rays == "hit" {
+                sphere_hit
+            } else {
+                sphere_miss
+            }
+    };
+    let x_range = ratio_range(rows.iter().map(ratio));
+    let n = primitives.len() as f64;
+    let slot = |name: &str| {
+        n - 1.0 - primitives.iter().position(|p| *p == name).unwrap_or(0) as f64
+    };
+    let mut c = ChartBuilder::on(&plot)
+        .margin(10)
+        .margin_right(150)
+        .x_label_area_size(50)
+        .y_label_area_size(250)
+        .build_cartesian_2d(x_range.clone().log_scale(), -0.6..(n - 0.4))?;
+    c.configure_mesh()
+        .x_desc("cost of one test ÷ the sphere's (log scale)")
+        .y_labels(primitives.len())
+        .x_label_formatter(&|x| ratio_label(*x))
+        .x_labels(12)
+        .y_label_formatter(&|y| {
+            let k = n - 1.0 - y.round();
+            if (y - y.round()).abs() > 1e-6 || k < 0.0 || k >= n {
+                return String::new();
+            }
+            primitives[k as usize].to_string()
+        })
+        .label_style(font(16.0))
+        .axis_desc_style(font(15.0))
+        .light_line_style(WHITE)
+        .draw()?;
+    // the sphere's cost: ratio 1
+    c.draw_series(LineSeries::new(
+        [(1.0, -0.6), (1.0, n - 0.4)],
+        GREY.stroke_width(1),
+    ))?;
+    for r in rows {
+        let colour = if r.rays == "hit" { HIT } else { MISS };
+        let dy = if r.rays == "hit" { -4 } else { 4 };
+        c.draw_series(std::iter::once(
+            EmptyElement::at((ratio(r), slot(&r.primitive)))
+                + Circle::new((0, dy), 6, colour.filled()),
+        ))?;
+    }
+    // ns per test at the right
+    let right = x_range.end;
+    for name in primitives {
+        let ns = |rays: &str| {
+            rows.iter()
+                .find(|r| r.primitive == *name && r.rays == rays)
+                .map_or("–".to_string(), |r| format!("{:.0}", r.nanos))
+        };
+        let style = font(15.0)
+            .color(&BLACK)
+            .pos(Pos::new(HPos::Left, VPos::Center));
+        c.draw_series(std::iter::once(
+            EmptyElement::at((right, slot(name)))
+                + Text::new(
+                    format!("{} / {} ns", ns("hit"), ns("miss")),
+                    (12, 0),
+                    style,
+                ),
+        ))?;
+    }
+    Ok(())
+}
+
+/// The speed-up from bounding: time per ray without a bound ÷ with it.
+pub fn bounding_chart() -> Result<Figure, ChartError> {
+    let rows: Vec<BoundingRow> = measured("ch08", "bounding.csv")?;
+    let objects = names(rows.iter().map(|r| r.object.as_str()));
+    let height = 130 + 34 * objects.len() as u32;
+    chart(
+        "bounding-chart",
+        "What a bound saves: the time per ray of each object tested alone, divided by its time behind a bound (log scale; right of 1 the bound pays, left of 1 it costs). The same seeded random lines for every object and bound; the percentages at the right are the rays that hit the box but miss the object.",
+        900,
+        height,
+        |area| draw_bounding(area, &rows, &objects),
+    )
+}
+
+fn draw_bounding(
+    area: &raystep_figure::ChartArea,
+    rows: &[BoundingRow],
+    objects: &[&str],
+) -> Result<(), ChartError> {
+    let (legend, plot) = area.split_vertically(40);
+    for (i, (_, colour, name)) in BOUND_KINDS.iter().enumerate() {
+        let x = 60 + 270 * i as i32;
+        legend.draw(&Circle::new((x, 20), 6, colour.filled()))?;
+        legend.draw(&Text::new(*name, (x + 14, 11), font(16.0)))?;
+    }
+    let unbounded = |object: &str| {
+        rows.iter()
+            .find(|r| r.object == object && r.bound == "none")
+            .map(|r| r.nanos)
+    };
+    let speed_ups: Vec<(&BoundingRow, f64)> = rows
+        .iter()
+        .filter(|r| r.bound != "none")
+        .filter_map(|r| Some((r, unbounded(&r.object)? / r.nanos)))
+        .collect();
+    let x_range = ratio_range(speed_ups.iter().map(|(_, s)| *s));
+    let n = objects.len() as f64;
+    let slot = |name: &str| {
+        n - 1.0 - objects.iter().position(|p| *p == name).unwrap_or(0) as f64
+    };
+    let mut c = ChartBuilder::on(&plot)
+        .margin(10)
+        .margin_right(120)
+        .x_label_area_size(50)
+        .y_label_area_size(250)
+        .build_cartesian_2d(x_range.clone().log_scale(), -0.6..(n - 0.4))?;
+    c.configure_mesh()
+        .x_desc("speed-up: time per ray alone ÷ behind the bound (log scale)")
+        .y_labels(objects.len())
+        .x_label_formatter(&|x| ratio_label(*x))
+        .x_labels(12)
+        .y_label_formatter(&|y| {
+            let k = n - 1.0 - y.round();
+            if (y - y.round()).abs() > 1e-6 || k < 0.0 || k >= n {
+                return String::new();
+            }
+            objects[k as usize].to_string()
+        })
+        .label_style(font(16.0))
+        .axis_desc_style(font(15.0))
+        .light_line_style(WHITE)
+        .draw()?;
+    c.draw_series(LineSeries::new(
+        [(1.0, -0.6), (1.0, n - 0.4)],
+        GREY.stroke_width(1),
+    ))?;
+    for (k, (kind, colour, _)) in BOUND_KINDS.iter().enumerate() {
+        let dy = 6 * (k as i32 - 1);
+        c.draw_series(speed_ups.iter().filter(|(r, _)| r.bound == *kind).map(
+            |(r, s)| {
+                EmptyElement::at((*s, slot(&r.object)))
+                    + Circle::new((0, dy), 6, colour.filled())
+            },
+        ))?;
+    }
+    let right = x_range.end;
+    for name in objects {
+        let Some(boxed) =
+            rows.iter().find(|r| r.object == *name && r.bound == "box")
+        else {
+            continue;
+        };
+        let style = font(15.0)
+            .color(&BLACK)
+            .pos(Pos::new(HPos::Left, VPos::Center));
+        c.draw_series(std::iter::once(
+            EmptyElement::at((right, slot(name)))
+                + Text::new(
+                    format!("{:.0} % wasted", 100.0 * boxed.wasted()),
+                    (12, 0),
+                    style,
+                ),
+        ))?;
+    }
+    Ok(())
+}
