@@ -162,3 +162,72 @@ fn chapter_07_rasterizes_polygons_only() {
     );
     assert!(!out.exists());
 }
+
+/// Chapter 8's scene renders with chapter 8's shapes (its folder chooses
+/// the renderer); chapter 6's renderer refuses its torus by name, and a
+/// spindle torus is refused at its line and column. No image is written
+/// for either.
+#[test]
+fn chapter_08_renders_its_primitives_and_others_refuse_them() {
+    let dir = scratch("ch08");
+    let primitives = scene("ch08-bounding-volumes/scenes/primitives.toml");
+    let out = dir.join("primitives.png");
+    let run = raystep(&[
+        "render",
+        &primitives,
+        "--out",
+        out.to_str().unwrap(),
+        "--size",
+        "90x40",
+    ]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert!(String::from_utf8_lossy(&run.stdout).contains("ch08 renderer"));
+    assert_eq!(png_size(&fs::read(&out).unwrap()), (90, 40));
+
+    let refused = dir.join("refused.png");
+    let run = raystep(&[
+        "render",
+        &primitives,
+        "--chapter",
+        "06",
+        "--out",
+        refused.to_str().unwrap(),
+    ]);
+    assert!(!run.status.success());
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("objects[2].box: a box is one of chapter 8's"),
+        "{stderr}"
+    );
+    assert!(!refused.exists());
+
+    let spindle = dir.join("spindle.toml");
+    fs::write(
+        &spindle,
+        "[camera]\nlook_from = [0, 1, 5]\nlook_at = [0, 0, 0]\n\n\
+         [[objects]]\ntorus = { center = [0, 0, 0], major = 1, minor = 1 }\n",
+    )
+    .unwrap();
+    let run = raystep(&[
+        "render",
+        spindle.to_str().unwrap(),
+        "--chapter",
+        "08",
+        "--out",
+        refused.to_str().unwrap(),
+    ]);
+    assert!(!run.status.success());
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(
+        stderr.contains(
+            "spindle.toml:6:50: objects[0].torus.minor: must be less than major"
+        ),
+        "{stderr}"
+    );
+    assert!(!refused.exists());
+}

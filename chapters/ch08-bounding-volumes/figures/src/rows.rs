@@ -69,10 +69,10 @@ pub struct BoundingRow {
 }
 
 impl BoundingRow {
-    /// The fraction of rays that hit the bound but miss the object: the
-    /// tests the bound could not save.
-    pub fn wasted(&self) -> f64 {
-        (self.bound_hits - self.object_hits) as f64 / self.rays as f64
+    /// The fraction of the bound's hits that miss the object: object tests
+    /// spent for nothing.
+    pub fn wasted_of_bound_hits(&self) -> f64 {
+        (self.bound_hits - self.object_hits) as f64 / self.bound_hits as f64
     }
 }
 
