@@ -113,7 +113,9 @@ fn worlds(path: &Path) -> (World, World, Arc<BoxedList>) {
     // a test size in the scene's own proportion
     let aspect = f64::from(scene.width) / f64::from(scene.height);
     (scene.width, scene.height) = (64, (64.0 / aspect).round() as u32);
-    let list = ch03::world(&scene, &path.display().to_string()).unwrap();
+    // chapter 8's shapes: chapter 3's sphere, plane and polygon, and every
+    // primitive chapter 8 adds, so its scenes run on every tracer too
+    let list = ch08::world(&scene, &path.display().to_string()).unwrap();
     let boxed = Arc::new(BoxedList::new(&list.objects));
     let other = list.clone().with_accelerator(boxed.clone());
     (list, other, boxed)

@@ -129,7 +129,10 @@ fn first_crossing(
     ray: &Ray,
     interval: Interval,
 ) -> Option<f64> {
-    // Step 1: where the ray enters and leaves each ball's sphere.
+    // Step 1: where the line enters and leaves each ball's sphere (the
+    // whole line, not only the interval: the pieces, and so the roots,
+    // then do not depend on where the interval starts, and a ray asked
+    // again from just past a hit cannot find a new root of the noise).
     let spans: Vec<Interval> = balls
         .iter()
         .map(|b| {
@@ -137,7 +140,9 @@ fn first_crossing(
                 center: b.center,
                 radius: b.radius,
             };
-            sphere.hit(ray, interval).unwrap_or(Interval::EMPTY)
+            sphere
+                .hit(ray, Interval::UNIVERSE)
+                .unwrap_or(Interval::EMPTY)
         })
         .collect();
     // Step 2: cut the ray at every entry and exit; in each piece the same
@@ -151,6 +156,12 @@ fn first_crossing(
     cuts.dedup();
     for piece in cuts.windows(2) {
         let (start, end) = (piece[0], piece[1]);
+        if end < interval.min {
+            continue; // wholly before the interval
+        }
+        if start > interval.max {
+            break; // and every later piece too
+        }
         let middle = 0.5 * (start + end);
         // Step 3: move the origin to the piece's start and sum the active
         // balls' polynomials, minus the threshold.
@@ -164,9 +175,13 @@ fn first_crossing(
                 }
             }
         }
-        // Step 4: its first root in the piece is the hit.
-        if let Some(&s) = roots_in(&sum, 0.0, end - start).first() {
-            return Some(start + s);
+        // Step 4: its first root in the interval is the hit.
+        let first = roots_in(&sum, 0.0, end - start)
+            .into_iter()
+            .map(|s| start + s)
+            .find(|&t| interval.contains(t));
+        if first.is_some() {
+            return first;
         }
     }
     None

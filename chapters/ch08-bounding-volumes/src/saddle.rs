@@ -85,7 +85,8 @@ fn saddle_normal(size: f64, p: DVec3) -> DVec3 {
 
 // ANCHOR: saddle_roots
 /// The roots of the cubic in `interval` whose points lie in the clip
-/// square, sorted: the bracketed method from the clip box's entry.
+/// square, sorted: the bracketed method from the clip box's entry, on
+/// the line's whole stretch through the box, then cut to `interval`.
 fn saddle_roots(
     size: f64,
     ray: &Ray,
@@ -95,11 +96,17 @@ fn saddle_roots(
     // Step 1: clip the ray to the box, grown by 1% of s so that no root
     // sits on an end of the interval (where p ≈ 0 has no reliable sign).
     let half = 1.01 * DVec3::new(size, 2.0 * size, size);
-    let Some(inside) = Aabb::new(-half, half)
-        .hit(&Ray::new(ray.origin - center, ray.direction), interval)
-    else {
+    // (The whole line's stretch, not the interval's, so that the roots
+    // do not depend on where the interval starts; see the torus.)
+    let Some(inside) = Aabb::new(-half, half).hit(
+        &Ray::new(ray.origin - center, ray.direction),
+        Interval::UNIVERSE,
+    ) else {
         return Vec::new();
     };
+    if !(inside.min.is_finite() && inside.max.is_finite()) {
+        return Vec::new();
+    }
     // Step 2: the cubic from the entry point, in the saddle's frame.
     let entry = Ray::new(ray.at(inside.min) - center, ray.direction);
     let cubic = saddle_cubic(size, &entry);

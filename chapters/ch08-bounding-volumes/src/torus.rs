@@ -179,23 +179,31 @@ fn bracketed_roots(
     interval: Interval,
 ) -> Vec<f64> {
     // Step 1: clip the ray to the torus's box (axis-aligned in its own
-    // frame), grown by 1% of r: there are no roots outside it. (The tight box touches the torus, and a
-    // root on an end of the interval has p ≈ 0 there, a sign the method
-    // cannot trust: a ray onto the top of the tube would lose its hit.)
+    // frame), grown by 1% of r: there are no roots outside it. (The tight
+    // box touches the torus, and a root on an end of the interval has
+    // p ≈ 0 there, a sign the method cannot trust: a ray onto the top of
+    // the tube would lose its hit.)
     let pad = 0.01 * minor;
     let (reach, r) = (major + minor + pad, minor + pad);
     let bounds =
         Aabb::new(DVec3::new(-reach, -r, -reach), DVec3::new(reach, r, reach));
-    let Some(inside) = bounds.hit(ray, interval) else {
+    // The whole line's stretch inside the box, not only the interval's:
+    // the roots then do not depend on where the interval starts, so a
+    // ray asked again from just past a hit (a shadow ray leaving the
+    // surface) cannot find a new root of the rounding noise there.
+    let Some(inside) = bounds.hit(ray, Interval::UNIVERSE) else {
         return Vec::new();
     };
+    if !(inside.min.is_finite() && inside.max.is_finite()) {
+        return Vec::new(); // a zero direction: no line at all
+    }
     // Step 2: move the ray's origin to where it enters the box. From a
     // far origin (|O| = 10⁶) the coefficients grow like |O|⁴ and cancel
     // down to the size of the torus; from the entry they stay small.
     let entry = Ray::new(ray.at(inside.min), ray.direction);
     let quartic = torus_quartic(major, minor, &entry);
     // Step 3: the roots inside the box, in the moved ray's s = t − entry,
-    // shifted back to the ray's own t.
+    // shifted back to the ray's own t; then those in the interval.
     let mut roots: Vec<f64> = roots_in(&quartic, 0.0, inside.size())
         .into_iter()
         .map(|s| inside.min + s)

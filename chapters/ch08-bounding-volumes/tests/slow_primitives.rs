@@ -649,3 +649,67 @@ fn blobby_bounds() {
         assert!(reach <= sphere.radius + 1e-12, "{ball:?} sticks out");
     }
 }
+
+/// Asked again from just past a hit (interval.min = t.next_up(), as a
+/// shadow ray leaving the surface asks, and as chapter 4's shadow check
+/// walks past an object's own hits), a slow primitive moves on to its
+/// next root or to none: its roots do not depend on where the interval
+/// starts. Were they searched from the interval's start, a ray leaving
+/// the surface would find a new root of the rounding noise one ulp
+/// further on every time, and that walk would never end.
+#[test]
+fn asked_again_past_a_hit_the_roots_move_on() {
+    let objects: Vec<Box<dyn Primitive>> = vec![
+        Box::new(
+            Torus::new(
+                DVec3::new(0.3, -0.2, 0.1),
+                DVec3::new(0.0, 0.8, 0.6),
+                1.2,
+                0.4,
+                TorusSolver::Bracketed,
+            )
+            .unwrap(),
+        ),
+        Box::new(Saddle::new(DVec3::new(0.1, 0.0, -0.2), 0.9).unwrap()),
+        Box::new(
+            Blobby::new(
+                vec![
+                    ball(DVec3::ZERO, 1.1, 1.0),
+                    ball(DVec3::new(1.0, 0.5, 0.0), 1.0, 1.0),
+                ],
+                0.4,
+            )
+            .unwrap(),
+        ),
+    ];
+    let mut rng = Rng(11);
+    let mut worst = [0usize; 3];
+    for (k, object) in objects.iter().enumerate() {
+        let sphere = object.bounding_sphere();
+        let mut surface_points = 0;
+        while surface_points < 300 {
+            // a ray from outside onto the surface, then one leaving the
+            // hit point toward a random "light"
+            let from = sphere.center + 3.0 * sphere.radius * rng.unit_vector();
+            let at = sphere.center + 0.5 * sphere.radius * rng.unit_vector();
+            let Some(hit) =
+                object.intersect(&Ray::new(from, at - from), Interval::FORWARD)
+            else {
+                continue;
+            };
+            surface_points += 1;
+            let light = sphere.center + 4.0 * sphere.radius * rng.unit_vector();
+            let leaving = Ray::new(hit.point, light - hit.point);
+            let mut interval = Interval::new(0.0, 1.0);
+            let mut steps = 0;
+            while let Some(next) = object.intersect(&leaving, interval) {
+                steps += 1;
+                assert!(steps <= 8, "object {k}: a root at every start");
+                interval.min = next.t.next_up();
+            }
+            worst[k] = worst[k].max(steps);
+        }
+    }
+    // a torus line meets it at most 4 times, the others fewer here
+    assert!(worst.iter().all(|&w| w <= 5), "{worst:?}");
+}

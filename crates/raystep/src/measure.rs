@@ -124,7 +124,7 @@ mod tests {
             }
         }
         committed.sort();
-        let measured: Vec<String> = CHAPTERS
+        let mut measured: Vec<String> = CHAPTERS
             .iter()
             .flat_map(|c| {
                 c.measurements
@@ -132,6 +132,7 @@ mod tests {
                     .map(|m| format!("{}/{}", c.id, m.file))
             })
             .collect();
+        measured.sort();
         assert_eq!(committed, measured);
     }
 

@@ -189,7 +189,7 @@ fn tightness() -> Figure {
             kind: BoundKind::Sphere,
         },
     ];
-    let (gap, top, bottom) = (40.0, 40.0, 36.0);
+    let (gap, top, bottom) = (35.0, 40.0, 36.0);
     let side = f64::from(PANEL_PX);
     let width = 4.0 * side + 5.0 * gap;
     let mut page = Page::new(width, side + top + bottom);

@@ -60,7 +60,12 @@ pub fn torus_roots() -> Figure {
             6,
             RGBColor(213, 94, 0).stroke_width(2),
         ))?;
-        legend.draw(&Text::new("closed-form roots", (484, 8), font(15.0)))?;
+        let closed_label = if closed.is_empty() {
+            "closed-form roots (it finds none)".to_string()
+        } else {
+            format!("closed-form roots ({} found)", closed.len())
+        };
+        legend.draw(&Text::new(closed_label, (484, 8), font(15.0)))?;
         let (left, right) = plots.split_horizontally(450);
         let panels = [
             (&left, 1.6, "the ray inside the torus's box"),
