@@ -2,44 +2,16 @@
 //! own: analytic hits, bounds that hold the surface, normals that are
 //! never NaN at near-tangent rays, and clear errors for bad parameters.
 //! (The torus's two solvers are compared in `tests/torus_solvers.rs`.)
+mod common;
 use ch08::{
     Aabb, Ball, Blobby, BoundingSphere, DVec3, Interval, Primitive, Ray,
     Saddle, Shape, Torus, TorusSolver,
 };
+use common::Rng;
 use std::f64::consts::PI;
 
 const SOLVERS: [TorusSolver; 2] =
     [TorusSolver::ClosedForm, TorusSolver::Bracketed];
-
-/// SplitMix64: deterministic random numbers, the same on every machine.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-
-    fn unit_vector(&mut self) -> DVec3 {
-        loop {
-            let v = DVec3::new(
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-            );
-            if (0.01..=1.0).contains(&v.length_squared()) {
-                return v.normalize();
-            }
-        }
-    }
-}
 
 fn near(a: f64, b: f64, tolerance: f64) -> bool {
     (a - b).abs() <= tolerance

@@ -1,6 +1,8 @@
 //! Exercise 3: the torus quartic's coefficients, checked against the
 //! torus's implicit function at the ray's points.
+mod common;
 use ch08::{DVec3, Ray, horner, torus_quartic};
+use common::Rng;
 use raystep_check::Table;
 
 /// The implicit function f = (x² + y² + z² + R² − r²)² − 4R²(x² + z²)
@@ -10,23 +12,6 @@ fn implicit(major: f64, minor: f64, p: DVec3) -> (f64, f64) {
     let e = p.length_squared() + rr - minor * minor;
     let size = (p.length_squared() + rr + minor * minor).powi(2);
     (e * e - 4.0 * rr * across, size)
-}
-
-/// SplitMix64: deterministic random numbers, the same on every machine.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
 }
 
 /// On 500 seeded tori and rays (directions of any length, origins inside

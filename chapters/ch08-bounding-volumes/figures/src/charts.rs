@@ -83,6 +83,51 @@ fn ratio_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
     (lo.log10() - 0.08)..(hi.log10() + 0.08)
 }
 
+/// The chart both figures share: one row per name (the first on top),
+/// the x axis log₁₀ of a ratio over `x`, labelled by [`draw_log_ticks`].
+fn named_rows<'a, 'b>(
+    plot: &'a raystep_figure::ChartArea<'b>,
+    root: &raystep_figure::ChartArea,
+    names: &[&str],
+    x: std::ops::Range<f64>,
+    margin_right: u32,
+    description: &str,
+) -> Result<Chart<'a, 'b>, ChartError> {
+    let n = names.len() as f64;
+    let y = -0.6..(n - 0.4);
+    let mut c = ChartBuilder::on(plot)
+        .margin(10)
+        .margin_right(margin_right)
+        .x_label_area_size(50)
+        .y_label_area_size(250)
+        .build_cartesian_2d(x.clone(), y.clone())?;
+    c.configure_mesh()
+        .x_desc(description)
+        .y_labels(names.len())
+        .x_labels(0)
+        .disable_x_mesh()
+        .y_label_formatter(&|y| {
+            let k = n - 1.0 - y.round();
+            if (y - y.round()).abs() > 1e-6 || k < 0.0 || k >= n {
+                return String::new();
+            }
+            names[k as usize].to_string()
+        })
+        .label_style(font(16.0))
+        .axis_desc_style(font(15.0))
+        .light_line_style(WHITE)
+        .draw()?;
+    draw_log_ticks(root, &mut c, &x, &y)?;
+    Ok(c)
+}
+
+/// The charts' plotting context: log₁₀ ratio across, rows down.
+type Chart<'a, 'b> = ChartContext<
+    'a,
+    SVGBackend<'b>,
+    Cartesian2d<RangedCoordf64, RangedCoordf64>,
+>;
+
 /// "Fast vs slow": each primitive's test against the sphere's.
 pub fn costs_chart() -> Result<Figure, ChartError> {
     let rows: Vec<CostRow> = measured("ch08", "costs.csv")?;
@@ -134,29 +179,14 @@ fn draw_costs(
     let slot = |name: &str| {
         n - 1.0 - primitives.iter().position(|p| *p == name).unwrap_or(0) as f64
     };
-    let mut c = ChartBuilder::on(&plot)
-        .margin(10)
-        .margin_right(150)
-        .x_label_area_size(50)
-        .y_label_area_size(250)
-        .build_cartesian_2d(x_range.clone(), -0.6..(n - 0.4))?;
-    c.configure_mesh()
-        .x_desc("cost of one test ÷ the sphere's (log scale)")
-        .y_labels(primitives.len())
-        .x_labels(0)
-        .disable_x_mesh()
-        .y_label_formatter(&|y| {
-            let k = n - 1.0 - y.round();
-            if (y - y.round()).abs() > 1e-6 || k < 0.0 || k >= n {
-                return String::new();
-            }
-            primitives[k as usize].to_string()
-        })
-        .label_style(font(16.0))
-        .axis_desc_style(font(15.0))
-        .light_line_style(WHITE)
-        .draw()?;
-    draw_log_ticks(area, &mut c, &x_range, &(-0.6..(n - 0.4)))?;
+    let mut c = named_rows(
+        &plot,
+        area,
+        primitives,
+        x_range.clone(),
+        150,
+        "cost of one test ÷ the sphere's (log scale)",
+    )?;
     // the sphere's cost: ratio 1
     c.draw_series(LineSeries::new(
         [(0.0, -0.6), (0.0, n - 0.4)],
@@ -233,29 +263,14 @@ fn draw_bounding(
     let slot = |name: &str| {
         n - 1.0 - objects.iter().position(|p| *p == name).unwrap_or(0) as f64
     };
-    let mut c = ChartBuilder::on(&plot)
-        .margin(10)
-        .margin_right(190)
-        .x_label_area_size(50)
-        .y_label_area_size(250)
-        .build_cartesian_2d(x_range.clone(), -0.6..(n - 0.4))?;
-    c.configure_mesh()
-        .x_desc("speed-up: time per ray alone ÷ behind the bound (log scale)")
-        .y_labels(objects.len())
-        .x_labels(0)
-        .disable_x_mesh()
-        .y_label_formatter(&|y| {
-            let k = n - 1.0 - y.round();
-            if (y - y.round()).abs() > 1e-6 || k < 0.0 || k >= n {
-                return String::new();
-            }
-            objects[k as usize].to_string()
-        })
-        .label_style(font(16.0))
-        .axis_desc_style(font(15.0))
-        .light_line_style(WHITE)
-        .draw()?;
-    draw_log_ticks(area, &mut c, &x_range, &(-0.6..(n - 0.4)))?;
+    let mut c = named_rows(
+        &plot,
+        area,
+        objects,
+        x_range.clone(),
+        190,
+        "speed-up: time per ray alone ÷ behind the bound (log scale)",
+    )?;
     c.draw_series(LineSeries::new(
         [(0.0, -0.6), (0.0, n - 0.4)],
         GREY.stroke_width(1),

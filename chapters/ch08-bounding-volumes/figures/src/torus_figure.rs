@@ -113,36 +113,25 @@ pub fn torus_roots() -> Figure {
                 samples,
                 RGBColor(0, 0, 0).stroke_width(2),
             ))?;
-            let visible = |t: &&f64| (t.abs() - 0.0) <= reach * 1.001;
-            c.draw_series(
-                bracketed
+            // the roots in the panel, in its coordinate t − DISTANCE
+            let shown = |roots: &[f64]| -> Vec<f64> {
+                roots
                     .iter()
                     .map(|t| t - DISTANCE)
-                    .collect::<Vec<_>>()
-                    .iter()
-                    .filter(visible)
-                    .map(|t| {
-                        Circle::new(
-                            (*t, 0.0),
-                            7,
-                            RGBColor(0, 114, 178).stroke_width(2),
-                        )
-                    }),
+                    .filter(|s| s.abs() <= reach * 1.001)
+                    .collect()
+            };
+            let blue = RGBColor(0, 114, 178).stroke_width(2);
+            let vermilion = RGBColor(213, 94, 0).stroke_width(2);
+            c.draw_series(
+                shown(&bracketed)
+                    .into_iter()
+                    .map(|s| Circle::new((s, 0.0), 7, blue)),
             )?;
             c.draw_series(
-                closed
-                    .iter()
-                    .map(|t| t - DISTANCE)
-                    .collect::<Vec<_>>()
-                    .iter()
-                    .filter(visible)
-                    .map(|t| {
-                        Cross::new(
-                            (*t, 0.0),
-                            6,
-                            RGBColor(213, 94, 0).stroke_width(2),
-                        )
-                    }),
+                shown(&closed)
+                    .into_iter()
+                    .map(|s| Cross::new((s, 0.0), 6, vermilion)),
             )?;
         }
         Ok(())
