@@ -10,7 +10,7 @@ use crate::BoundingSphere;
 /// A bounding sphere of `points`, close to the smallest one, by Ritter's
 /// algorithm ("An efficient bounding sphere", Graphics Gems, 1990): find
 /// two points far apart, take the sphere on them as a diameter, and grow
-/// it for every point still outside. Three passes over the points; the
+/// it for every point still outside. Four passes over the points; the
 /// radius is usually 5 to 20 % above the smallest sphere's.
 ///
 /// No points: radius 0 at the origin. The points must be finite.

@@ -138,6 +138,6 @@ impl Primitive for Triangle {
     }
 
     fn bounding_sphere(&self) -> BoundingSphere {
-        crate::chapter_shapes::sphere_around(&self.bounds(), &self.vertices)
+        crate::chapter_shapes::triangle_sphere(&self.vertices)
     }
 }

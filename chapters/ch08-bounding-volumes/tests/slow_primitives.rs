@@ -326,7 +326,7 @@ fn saddle_analytic_hits() {
 
 /// For each of 4000 seeded points of the saddle and a direction in its
 /// tangent plane, rays along it moved off the surface by ±1e-3 … ±1e-12,
-/// from 1 and from 100 before the point (56 000 rays), and 20 000 random
+/// from 1 and from 100 before the point (64 000 rays), and 20 000 random
 /// rays through the box. No hit has a NaN or non-unit normal; every hit
 /// lies on the surface and in the box; and no ray misses a surface it
 /// crosses (a sign change of y − h(x, z) between samples along the ray,

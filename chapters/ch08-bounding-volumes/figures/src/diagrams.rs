@@ -215,7 +215,7 @@ fn tightness() -> Figure {
         let of_bound = f64::from(wasted) / f64::from(hit + wasted);
         page.label_sized(
             DVec2::new(x + side / 2.0, bottom - 16.0),
-            &format!("{:.0} % of the bound's hits wasted", 100.0 * of_bound),
+            &format!("{:.0} % of its hits wasted", 100.0 * of_bound),
             Anchor::Center,
             13.0,
             palette::BLACK,
@@ -223,12 +223,12 @@ fn tightness() -> Figure {
     }
     Figure::new(
         "tightness",
-        "Each object seen along parallel rays, one per pixel (180 × 180 rays over a 3 × 3 square): green rays hit the object; vermilion rays hit the bound but miss the object, so they paid for the bound test and the object test for nothing; grey rays are turned away by the bound after one cheap test. The tilted torus fills little of its box and less of its sphere; the thin triangle fills little of either. The chart at the end of the chapter counts random lines from every direction instead.",
+        "Each object seen along parallel rays, one per pixel (180 × 180 rays over a 3.3 × 3.3 square): green rays hit the object; vermilion rays hit the bound but miss the object, so they paid for the bound test and the object test for nothing; grey rays are turned away by the bound after one cheap test. Seen from this side the tilted torus fills more of its box than of its sphere, and the thin triangle little of either; the chart at the end of the chapter counts random lines from every direction instead, where the torus's sphere is the tighter bound.",
         page,
     )
 }
 
-/// The picture of `object` and `bound` seen along −z over [−1.5, 1.5]²,
+/// The picture of `object` and `bound` seen along −z over [−1.65, 1.65]²,
 /// and the counts of (hit, wasted, turned away) rays.
 fn view_along_z(object: &dyn Primitive, bound: &Bound) -> (Vec<u8>, [u32; 3]) {
     let mut rgb = Vec::with_capacity((PANEL_PX * PANEL_PX * 3) as usize);
@@ -237,7 +237,7 @@ fn view_along_z(object: &dyn Primitive, bound: &Bound) -> (Vec<u8>, [u32; 3]) {
     for row in 0..PANEL_PX {
         for column in 0..PANEL_PX {
             let at = |i: u32| {
-                -1.5 + 3.0 * (f64::from(i) + 0.5) / f64::from(PANEL_PX)
+                -1.65 + 3.3 * (f64::from(i) + 0.5) / f64::from(PANEL_PX)
             };
             let origin = DVec3::new(at(column), -at(row), 10.0);
             let ray = Ray::new(origin, DVec3::NEG_Z);

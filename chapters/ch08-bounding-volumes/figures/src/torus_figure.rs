@@ -68,7 +68,7 @@ pub fn torus_roots() -> Figure {
         legend.draw(&Text::new(closed_label, (484, 8), font(15.0)))?;
         let (left, right) = plots.split_horizontally(450);
         let panels = [
-            (&left, 1.6, "the ray inside the torus's box"),
+            (&left, MAJOR + MINOR, "the ray across the torus's box"),
             (&right, 2.5 * half, "around the rim: two close roots"),
         ];
         for (panel, reach, title) in panels {
