@@ -92,6 +92,18 @@ pub use tightness::{
 };
 
 // ---------------------------------------------------------------------
+// Part 2: bounding volume hierarchies.
+// ---------------------------------------------------------------------
+
+mod bvh;
+mod bvh_build;
+mod bvh_traverse;
+
+pub use bvh::{Bvh, BvhNode, INTERSECTION, Split, TRAVERSAL, area};
+pub use bvh_build::MAX_LEAF;
+pub use raystep_world::{Accelerator, Object, World};
+
+// ---------------------------------------------------------------------
 // Scene files: every primitive from TOML.
 // ---------------------------------------------------------------------
 

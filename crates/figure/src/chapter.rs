@@ -5,6 +5,7 @@ use std::path::PathBuf;
 use raystep_render::csv::{CsvRow, from_csv};
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
+use raystep_world::Accelerate;
 
 use crate::{ChartError, Figure};
 
@@ -38,8 +39,11 @@ pub struct Chapter {
 }
 
 /// A chapter's renderer: the scene (its size already chosen), the file's
-/// name for messages, and how to run; an error is one line naming the file.
-pub type Renderer = fn(&Scene, &str, &RenderOptions) -> Result<Image, String>;
+/// name for messages, how to run, and what searches the objects (the
+/// lecture's loop or chapter 8's hierarchy: `raystep render --accel`); an
+/// error is one line naming the file.
+pub type Renderer =
+    fn(&Scene, &str, &RenderOptions, Accelerate) -> Result<Image, String>;
 
 /// One timing run behind a chart.
 #[derive(Clone, Copy, Debug)]

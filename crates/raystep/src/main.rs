@@ -109,6 +109,11 @@ enum Command {
         /// else the latest].
         #[arg(long, value_name = "CHAPTER")]
         chapter: Option<String>,
+        /// What searches the objects for each ray: the lecture's loop over
+        /// every object (`brute`), or chapter 8's bounding volume hierarchy
+        /// (`bvh`, binned SAH); the image is the same.
+        #[arg(long, value_enum, default_value_t = render::Accel::Brute)]
+        accel: render::Accel,
     },
     /// Run a chapter's tests in student mode and report each exercise.
     ///
@@ -363,12 +368,14 @@ fn main() -> ExitCode {
             size,
             threads,
             chapter,
+            accel,
         } => render::run(&render::Options {
             scene,
             out,
             size,
             threads,
             chapter,
+            accel,
         }),
         Command::Check {
             chapter,

@@ -2,9 +2,11 @@
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::sync::Arc;
 
 use raystep_render::{Progress, RenderOptions};
 use raystep_scene::MAX_SIZE;
+use raystep_world::Accelerate;
 
 use crate::chapters::{CHAPTERS, find};
 use crate::{Error, shown};
@@ -27,6 +29,40 @@ pub struct Options {
     pub threads: Option<usize>,
     /// The chapter whose renderer to use.
     pub chapter: Option<String>,
+    /// What searches the objects.
+    pub accel: Accel,
+}
+
+/// `--accel`: what searches a world's objects for each ray.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Accel {
+    /// The lecture's loop: every ray against every object (chapter 3).
+    Brute,
+    /// Chapter 8's bounding volume hierarchy, binned SAH with 16 bins.
+    Bvh,
+}
+
+impl Accel {
+    /// Its name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Accel::Brute => "brute",
+            Accel::Bvh => "bvh",
+        }
+    }
+
+    /// What builds it for a list of objects.
+    pub fn accelerate(self) -> Accelerate {
+        match self {
+            Accel::Brute => |_| Arc::new(ch03::BruteForce),
+            Accel::Bvh => |objects| {
+                Arc::new(ch08::Bvh::for_objects(
+                    objects,
+                    ch08::Split::BinnedSah { bins: 16 },
+                ))
+            },
+        }
+    }
 }
 
 /// Runs `raystep render`.
@@ -52,15 +88,17 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         progress: Progress::Auto,
     };
     let image =
-        renderer(&scene, &file, &render_options).map_err(Error::Usage)?;
+        renderer(&scene, &file, &render_options, options.accel.accelerate())
+            .map_err(Error::Usage)?;
     image
         .write_png(&out)
         .map_err(|e| Error::Usage(e.to_string()))?;
     println!(
-        "wrote {} ({}×{}, {name} renderer)",
+        "wrote {} ({}×{}, {name} renderer, --accel {})",
         shown(&out),
         scene.width,
-        scene.height
+        scene.height,
+        options.accel.name()
     );
     Ok(ExitCode::SUCCESS)
 }

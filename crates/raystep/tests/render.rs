@@ -231,3 +231,48 @@ fn chapter_08_renders_its_primitives_and_others_refuse_them() {
     );
     assert!(!refused.exists());
 }
+
+/// `--accel bvh` searches with chapter 8's hierarchy and draws the same
+/// bytes as the lecture's loop, for a chapter 6 scene and chapter 8's;
+/// an unknown value is refused by name.
+#[test]
+fn the_bvh_draws_the_same_image_as_the_loop() {
+    let dir = scratch("accel");
+    for chapter_scene in [
+        "ch06-refraction/scenes/materials.toml",
+        "ch08-bounding-volumes/scenes/primitives.toml",
+    ] {
+        let mut images = Vec::new();
+        for accel in ["brute", "bvh"] {
+            let out = dir.join(format!("{accel}.png"));
+            let run = raystep(&[
+                "render",
+                &scene(chapter_scene),
+                "--size",
+                "64x36",
+                "--accel",
+                accel,
+                "--out",
+                out.to_str().unwrap(),
+            ]);
+            assert!(
+                run.status.success(),
+                "{}",
+                String::from_utf8_lossy(&run.stderr)
+            );
+            let said = String::from_utf8_lossy(&run.stdout).into_owned();
+            assert!(said.contains(&format!("--accel {accel}")), "{said}");
+            images.push(fs::read(&out).unwrap());
+        }
+        assert!(images[0] == images[1], "{chapter_scene}: the PNGs differ");
+    }
+    let run = raystep(&[
+        "render",
+        &scene("ch03-illumination/scenes/spheres.toml"),
+        "--accel",
+        "kd-tree",
+    ]);
+    assert!(!run.status.success());
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(stderr.contains("'kd-tree'"), "{stderr}");
+}

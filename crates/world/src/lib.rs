@@ -29,6 +29,11 @@ pub struct Object {
     pub material: usize,
 }
 
+/// Builds an [`Accelerator`] for a list of objects: how `raystep render
+/// --accel` hands a chapter's renderer the search it asked for (the
+/// lecture's loop, or chapter 8's hierarchy).
+pub type Accelerate = fn(&[Object]) -> Arc<dyn Accelerator>;
+
 /// Turns one shape of a scene file into a surface, or says why it cannot
 /// (a degenerate polygon, or a kind of shape the chapter has not taught).
 pub type MakeShape =
@@ -149,5 +154,11 @@ impl World {
             accelerator,
             ..self
         }
+    }
+
+    /// The same world searched by what `accelerate` builds for its objects.
+    pub fn accelerated(self, accelerate: Accelerate) -> World {
+        let accelerator = accelerate(&self.objects);
+        self.with_accelerator(accelerator)
     }
 }

@@ -6,6 +6,7 @@ mod diagrams;
 use raystep_figure::Chapter;
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
+use raystep_world::Accelerate;
 
 /// What chapter 3 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter = Chapter {
@@ -25,7 +26,10 @@ fn render(
     scene: &Scene,
     file: &str,
     options: &RenderOptions,
+    accelerate: Accelerate,
 ) -> Result<Image, String> {
-    let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
+    let world = ch03::world(scene, file)
+        .map_err(|e| e.to_string())?
+        .accelerated(accelerate);
     ch03::render(&world, ch03::Terms::All, options).map_err(|e| e.to_string())
 }

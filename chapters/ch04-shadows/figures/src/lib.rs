@@ -9,6 +9,7 @@ use raystep_figure::{Chapter, Measurement};
 use raystep_render::csv::to_csv;
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
+use raystep_world::Accelerate;
 
 /// What chapter 4 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter = Chapter {
@@ -38,8 +39,11 @@ fn render(
     scene: &Scene,
     file: &str,
     options: &RenderOptions,
+    accelerate: Accelerate,
 ) -> Result<Image, String> {
-    let world = ch03::world(scene, file).map_err(|e| e.to_string())?;
+    let world = ch03::world(scene, file)
+        .map_err(|e| e.to_string())?
+        .accelerated(accelerate);
     ch04::render(&world, ch04::Offset::ScaleAware, options)
         .map_err(|e| e.to_string())
 }

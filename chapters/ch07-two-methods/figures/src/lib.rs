@@ -9,6 +9,7 @@ use raystep_figure::{Chapter, Measurement};
 use raystep_render::csv::to_csv;
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
+use raystep_world::Accelerate;
 
 /// What chapter 7 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter = Chapter {
@@ -35,6 +36,7 @@ fn render(
     scene: &Scene,
     file: &str,
     _options: &RenderOptions,
+    _accelerate: Accelerate,
 ) -> Result<Image, String> {
     let stage =
         ch07::Stage::from_scene(scene, file).map_err(|e| e.to_string())?;

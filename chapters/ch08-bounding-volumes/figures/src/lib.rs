@@ -11,6 +11,7 @@ use raystep_figure::{Chapter, Measurement};
 use raystep_render::csv::to_csv;
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
+use raystep_world::Accelerate;
 
 /// What chapter 8 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter = Chapter {
@@ -48,8 +49,11 @@ fn render(
     scene: &Scene,
     file: &str,
     options: &RenderOptions,
+    accelerate: Accelerate,
 ) -> Result<Image, String> {
-    let world = ch08::world(scene, file).map_err(|e| e.to_string())?;
+    let world = ch08::world(scene, file)
+        .map_err(|e| e.to_string())?
+        .accelerated(accelerate);
     let (image, _) = ch06::render(
         &world,
         &ch06::DEFAULT_STOP,

@@ -1,0 +1,276 @@
+//! Part 2's hierarchy against the lecture's loop: for every split rule,
+//! the closest hit (object and t) and the any-hit answer of the BVH equal
+//! brute force's on seeded rays, on mixed scenes, on degenerate ones and
+//! on the bunny. Disagreements are counted and must be 0.
+mod common;
+
+use std::path::Path;
+use std::sync::Arc;
+
+use ch03::{BruteForce, Sphere};
+use ch08::{
+    Aabb, Accelerator, AxisBox, BoundingSphere, Bvh, DVec3, Interval, Object,
+    RandomLines, Ray, Shape, Split, Triangle, TriangleTest, camera_rays,
+};
+use common::Rng;
+use raystep_scene::Mesh;
+
+/// Every rule the builder knows, as the tests run them.
+const SPLITS: [Split; 6] = [
+    Split::Midpoint,
+    Split::Median,
+    Split::BinnedSah { bins: 4 },
+    Split::BinnedSah { bins: 8 },
+    Split::BinnedSah { bins: 16 },
+    Split::BinnedSah { bins: 32 },
+];
+
+fn object(shape: impl Shape + 'static) -> Object {
+    Object {
+        shape: Arc::new(shape),
+        material: 0,
+    }
+}
+
+/// A seeded jumble around `offset`: spheres, boxes and triangles of many
+/// sizes, some overlapping, and one plane below them.
+fn jumble(count: usize, offset: DVec3, seed: u64) -> Vec<Object> {
+    let mut rng = Rng(seed);
+    let mut objects = vec![object(ch02::InfinitePlane(ch02::Plane {
+        normal: DVec3::Y,
+        d: -(offset.y - 12.0) * -1.0,
+    }))];
+    for k in 0..count {
+        let c = offset
+            + DVec3::new(
+                rng.range(-10.0, 10.0),
+                rng.range(-10.0, 10.0),
+                rng.range(-10.0, 10.0),
+            );
+        let size = rng.range(0.05, 2.0);
+        objects.push(match k % 3 {
+            0 => object(Sphere::new(c, size)),
+            1 => object(
+                AxisBox::new(
+                    c - size * DVec3::new(1.0, 0.5, 0.7),
+                    c + size * DVec3::new(0.6, 1.0, 0.4),
+                )
+                .unwrap(),
+            ),
+            _ => object(
+                Triangle::new(
+                    [
+                        c,
+                        c + size * rng.unit_vector(),
+                        c + size * rng.unit_vector(),
+                    ],
+                    TriangleTest::Watertight,
+                )
+                .unwrap_or_else(|_| {
+                    Triangle::new(
+                        [c, c + DVec3::X, c + DVec3::Y],
+                        TriangleTest::Watertight,
+                    )
+                    .unwrap()
+                }),
+            ),
+        });
+    }
+    objects
+}
+
+/// How the BVH and brute force disagree on `rays`: closest hits at a
+/// different t (or one hit and one miss), and any-hit answers on a
+/// shorter interval.
+fn disagreements(bvh: &Bvh, objects: &[Object], rays: &[Ray]) -> usize {
+    let mut wrong = 0;
+    for ray in rays {
+        let expected = BruteForce.closest_hit(objects, ray, Interval::FORWARD);
+        let actual = bvh.closest_hit(objects, ray, Interval::FORWARD);
+        let same = match (expected, actual) {
+            (None, None) => true,
+            // the same t; a different object only where two objects
+            // are hit at exactly that t (a tie either may win)
+            (Some((i, a)), Some((j, b))) => {
+                let first_t = |k: usize| {
+                    objects[k]
+                        .shape
+                        .intersect(ray, Interval::FORWARD)
+                        .map(|h| h.t)
+                };
+                a.t == b.t
+                    && (i == j
+                        || (first_t(i) == Some(a.t) && first_t(j) == Some(a.t)))
+            }
+            _ => false,
+        };
+        wrong += usize::from(!same);
+        let short = Interval::new(1e-9, 7.5);
+        wrong += usize::from(
+            BruteForce.any_hit(objects, ray, short)
+                != bvh.any_hit(objects, ray, short),
+        );
+    }
+    wrong
+}
+
+/// Random lines through the scene's sphere, and rays from inside it.
+fn rays_through(objects: &[Object], count: usize, seed: u64) -> Vec<Ray> {
+    let bounds = objects
+        .iter()
+        .map(|o| o.shape.bounds())
+        .filter(|b| b.min.is_finite() && b.max.is_finite())
+        .fold(Aabb::EMPTY, Aabb::union);
+    let sphere = BoundingSphere::around_box(&bounds);
+    let mut rng = Rng(seed);
+    let mut rays: Vec<Ray> =
+        RandomLines::new(sphere, seed).take(count / 2).collect();
+    for _ in 0..count / 2 {
+        let from = sphere.center
+            + 0.8 * sphere.radius * rng.range(0.0, 1.0) * rng.unit_vector();
+        rays.push(Ray::new(from, rng.unit_vector()));
+    }
+    rays
+}
+
+#[test]
+fn every_split_agrees_with_brute_force_on_mixed_scenes() {
+    let mut total = 0;
+    for (seed, count, offset) in [
+        (1, 300, DVec3::ZERO),
+        (2, 60, DVec3::new(0.5, -3.0, 2.0)),
+        (3, 150, DVec3::new(1e6, -1e6, 5e5)),
+    ] {
+        let objects = jumble(count, offset, seed);
+        let rays = rays_through(&objects, 2000, seed + 10);
+        for split in SPLITS {
+            let bvh = Bvh::for_objects(&objects, split);
+            assert_eq!(bvh.unbounded, vec![0], "the plane stays outside");
+            let wrong = disagreements(&bvh, &objects, &rays);
+            assert_eq!(wrong, 0, "{} on scene {seed}", split.name());
+            total += rays.len();
+        }
+    }
+    assert!(total >= 36_000);
+}
+
+/// No objects, one, all centroids equal, all in one plane, and rays with
+/// NaN or infinite components: no panic, brute force's answers.
+#[test]
+fn degenerate_inputs_give_brute_forces_answers() {
+    let same_centre: Vec<Object> = (1..=40)
+        .map(|k| {
+            object(Sphere::new(DVec3::new(1.0, 2.0, 3.0), 0.05 * k as f64))
+        })
+        .collect();
+    let coplanar: Vec<Object> = (0..100)
+        .map(|k| {
+            let c = DVec3::new((k % 10) as f64, (k / 10) as f64, 0.0);
+            object(
+                Triangle::new(
+                    [c, c + DVec3::X, c + DVec3::Y],
+                    TriangleTest::Watertight,
+                )
+                .unwrap(),
+            )
+        })
+        .collect();
+    let scenes: Vec<(&str, Vec<Object>)> = vec![
+        ("no objects", Vec::new()),
+        ("one sphere", vec![object(Sphere::new(DVec3::ZERO, 1.0))]),
+        ("40 spheres, one centre", same_centre),
+        ("100 triangles in z = 0", coplanar),
+    ];
+    let mut odd = vec![
+        Ray::new(DVec3::ZERO, DVec3::ZERO),
+        Ray::new(DVec3::splat(f64::NAN), DVec3::X),
+        Ray::new(DVec3::new(0.5, 0.5, 5.0), DVec3::new(f64::NAN, 0.0, -1.0)),
+        Ray::new(
+            DVec3::new(0.5, 0.5, 5.0),
+            DVec3::new(0.0, 0.0, f64::NEG_INFINITY),
+        ),
+        Ray::new(DVec3::new(f64::INFINITY, 0.0, 0.0), DVec3::NEG_X),
+    ];
+    for (name, objects) in &scenes {
+        let mut rays = if objects.is_empty() {
+            RandomLines::new(
+                BoundingSphere {
+                    center: DVec3::ZERO,
+                    radius: 1.0,
+                },
+                4,
+            )
+            .take(100)
+            .collect()
+        } else {
+            rays_through(objects, 1000, 5)
+        };
+        // rays along the plane of the coplanar triangles, and onto it
+        rays.extend((0..50).map(|k| {
+            Ray::new(DVec3::new(-1.0, 0.1 * k as f64, 0.0), DVec3::X)
+        }));
+        rays.append(&mut odd.clone());
+        for split in SPLITS {
+            let bvh = Bvh::for_objects(objects, split);
+            assert_eq!(
+                disagreements(&bvh, objects, &rays),
+                0,
+                "{} on {name}",
+                split.name()
+            );
+        }
+    }
+    odd.clear();
+}
+
+/// The bunny's triangles, one object each: the BVH finds the same hits
+/// as the loop over all 3 674, and a table of each tree's shape.
+#[test]
+fn the_bunny_agrees_and_its_trees() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/meshes/bunny.obj");
+    let mesh = Mesh::load_obj(&path).unwrap_or_else(|e| {
+        panic!("{e} (the bunny lives in ../shared/meshes beside the workspace)")
+    });
+    let objects: Vec<Object> = (0..mesh.triangles.len())
+        .map(|k| {
+            object(
+                Triangle::new(mesh.triangle(k), TriangleTest::Watertight)
+                    .unwrap(),
+            )
+        })
+        .collect();
+    let bounds = objects
+        .iter()
+        .map(|o| o.shape.bounds())
+        .fold(Aabb::EMPTY, Aabb::union);
+    let rays = camera_rays(BoundingSphere::around_box(&bounds), 20);
+    let mut table = String::from(
+        "split        | nodes | leaves | depth | largest leaf | SAH cost\n",
+    );
+    for split in SPLITS {
+        let bvh = Bvh::for_objects(&objects, split);
+        assert_eq!(disagreements(&bvh, &objects, &rays), 0, "{}", split.name());
+        let leaves: Vec<u32> = bvh
+            .nodes
+            .iter()
+            .filter(|n| n.is_leaf())
+            .map(|n| n.count)
+            .collect();
+        // every triangle in exactly one leaf
+        let mut seen = bvh.order.clone();
+        seen.sort_unstable();
+        assert_eq!(seen, (0..objects.len() as u32).collect::<Vec<_>>());
+        assert_eq!(leaves.iter().sum::<u32>() as usize, objects.len());
+        table.push_str(&format!(
+            "{:<12} | {:>5} | {:>6} | {:>5} | {:>12} | {:>8.1}\n",
+            split.name(),
+            bvh.nodes.len(),
+            leaves.len(),
+            bvh.depth(),
+            leaves.iter().max().unwrap(),
+            bvh.sah_cost(),
+        ));
+    }
+    insta::assert_snapshot!(table);
+}
