@@ -244,7 +244,7 @@ fn the_bunny_agrees_and_its_trees() {
         .iter()
         .map(|o| o.shape.bounds())
         .fold(Aabb::EMPTY, Aabb::union);
-    let rays = camera_rays(BoundingSphere::around_box(&bounds), 20);
+    let rays = camera_rays(BoundingSphere::around_box(&bounds), 14);
     let mut table = String::from(
         "split        | nodes | leaves | depth | largest leaf | SAH cost\n",
     );
