@@ -98,12 +98,12 @@ impl Bvh {
         let Some(root) = self.nodes.first() else {
             return 0.0;
         };
-        let whole = area(&root.bounds);
+        let whole = root.bounds.surface_area();
         self.nodes
             .iter()
             .map(|node| {
                 let p = if whole > 0.0 {
-                    area(&node.bounds) / whole
+                    node.bounds.surface_area() / whole
                 } else {
                     1.0
                 };
@@ -133,16 +133,6 @@ impl Bvh {
             below(&self.nodes, 0)
         }
     }
-}
-
-/// A box's surface area (0 for an empty or flat box; infinite boxes give
-/// infinity).
-pub fn area(b: &Aabb) -> f64 {
-    if b.is_empty() {
-        return 0.0;
-    }
-    let d = b.max - b.min;
-    2.0 * (d.x * d.y + d.y * d.z + d.z * d.x)
 }
 
 /// Does `ray` meet the node's box within `interval`? The entry `t`.

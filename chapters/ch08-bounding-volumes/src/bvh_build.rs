@@ -2,7 +2,7 @@
 //! again, until the surface area heuristic says a leaf is cheaper.
 use raystep_core::{Aabb, DVec3};
 
-use crate::bvh::{INTERSECTION, TRAVERSAL, area};
+use crate::bvh::{INTERSECTION, TRAVERSAL};
 use crate::{Bvh, BvhNode, Split};
 
 /// The most objects a leaf may hold when the heuristic would rather not
@@ -76,11 +76,11 @@ fn subdivide(
     let (l, r) = objects.split_at(left);
     let boxes =
         |part: &[u32]| union_of(part.iter().map(|&i| input.boxes[i as usize]));
-    let parent = area(&node.bounds);
+    let parent = node.bounds.surface_area();
     let split_cost = if parent > 0.0 {
         TRAVERSAL
-            + (area(&boxes(l)) * l.len() as f64
-                + area(&boxes(r)) * r.len() as f64)
+            + (boxes(l).surface_area() * l.len() as f64
+                + boxes(r).surface_area() * r.len() as f64)
                 / parent
                 * INTERSECTION
     } else {
@@ -168,7 +168,7 @@ fn binned_sah(
         for k in (1..bins).rev() {
             n += counts[k];
             b = b.union(boxes[k]);
-            right_cost[k - 1] = area(&b) * n as f64;
+            right_cost[k - 1] = b.surface_area() * n as f64;
         }
         let (mut n, mut b) = (0usize, Aabb::EMPTY);
         for cut in 0..bins - 1 {
@@ -177,7 +177,7 @@ fn binned_sah(
             if n == 0 || n == objects.len() {
                 continue;
             }
-            let cost = area(&b) * n as f64 + right_cost[cut];
+            let cost = b.surface_area() * n as f64 + right_cost[cut];
             if best.is_none_or(|(c, _, _)| cost < c) {
                 best = Some((cost, axis, cut));
             }

@@ -3,8 +3,8 @@
 use raystep_core::{Hit, Interval, Ray};
 use raystep_world::{Accelerator, Object};
 
-use crate::Bvh;
 use crate::bvh::enter;
+use crate::{Bvh, BvhNode};
 
 impl Accelerator for Bvh {
     // ANCHOR: bvh_closest_hit
@@ -30,23 +30,24 @@ impl Accelerator for Bvh {
         for &index in &self.unbounded {
             test(index, &mut interval);
         }
-        // Step 2: the nodes still to visit, the root first.
-        let mut stack: Vec<u32> = Vec::with_capacity(64);
-        if !self.nodes.is_empty() {
-            stack.push(0);
+        // Step 2: the nodes still to visit, each with the t at which the
+        // ray enters its box; the root first.
+        let mut stack: Vec<(u32, f64)> = Vec::with_capacity(64);
+        if let Some(root) = self.nodes.first()
+            && let Some(t) = enter(root, ray, interval)
+        {
+            stack.push((0, t));
         }
-        while let Some(k) = stack.pop() {
-            let node = self.nodes[k as usize];
-            // Step 3: skip a box the ray misses, or enters beyond the
-            // closest hit (the interval has shrunk since it was pushed).
-            if enter(&node, ray, interval).is_none() {
+        while let Some((k, entry)) = stack.pop() {
+            // Step 3: skip a box that begins beyond the closest hit (the
+            // interval has shrunk since the box was pushed).
+            if entry > interval.max {
                 continue;
             }
+            let node = self.nodes[k as usize];
             if node.is_leaf() {
                 // Step 4: a leaf: test its objects.
-                let range =
-                    node.first as usize..(node.first + node.count) as usize;
-                for &index in &self.order[range] {
+                for &index in self.leaf_objects(&node) {
                     test(index, &mut interval);
                 }
             } else {
@@ -56,10 +57,12 @@ impl Accelerator for Bvh {
                 let ta = enter(&self.nodes[a as usize], ray, interval);
                 let tb = enter(&self.nodes[b as usize], ray, interval);
                 match (ta, tb) {
-                    (Some(ta), Some(tb)) if tb < ta => stack.extend([a, b]),
-                    (Some(_), Some(_)) => stack.extend([b, a]),
-                    (Some(_), None) => stack.push(a),
-                    (None, Some(_)) => stack.push(b),
+                    (Some(ta), Some(tb)) if tb < ta => {
+                        stack.extend([(a, ta), (b, tb)])
+                    }
+                    (Some(ta), Some(tb)) => stack.extend([(b, tb), (a, ta)]),
+                    (Some(ta), None) => stack.push((a, ta)),
+                    (None, Some(tb)) => stack.push((b, tb)),
                     (None, None) => {}
                 }
             }
@@ -95,9 +98,7 @@ impl Accelerator for Bvh {
                 continue;
             }
             if node.is_leaf() {
-                let range =
-                    node.first as usize..(node.first + node.count) as usize;
-                if self.order[range].iter().any(|&index| hits(index)) {
+                if self.leaf_objects(&node).iter().any(|&index| hits(index)) {
                     return true; // one blocker is enough
                 }
             } else {
@@ -105,5 +106,12 @@ impl Accelerator for Bvh {
             }
         }
         false
+    }
+}
+
+impl Bvh {
+    /// The objects of a leaf: its range of [`Bvh::order`].
+    fn leaf_objects(&self, node: &BvhNode) -> &[u32] {
+        &self.order[node.first as usize..(node.first + node.count) as usize]
     }
 }

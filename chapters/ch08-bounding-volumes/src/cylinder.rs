@@ -1,5 +1,6 @@
 use raystep_core::{Aabb, DVec3, Hit, Interval, Ray, Shape};
 
+use crate::sphere_roots::sphere_roots;
 use crate::{BoundingSphere, Primitive};
 
 /// A capped cylinder: the points within `radius` of the segment from
@@ -78,7 +79,7 @@ impl Cylinder {
         let d = ray.direction - dz * self.axis;
         // Step 2: the side, |o + t·d|² = r², between the caps.
         let r = self.radius;
-        let side = side_roots(o, d, r)
+        let side = sphere_roots(o, d, r)
             .into_iter()
             .flatten()
             .filter(|&t| (0.0..=self.height).contains(&(z0 + t * dz)))
@@ -105,32 +106,6 @@ impl Cylinder {
     }
     // ANCHOR_END: intersect
 }
-
-// ANCHOR: side_roots
-/// The roots t of |o + t·d|² = r², in the stable form of chapter 3's
-/// sphere: the discriminant from the closest approach l, and the second
-/// root as c/q. None where the ray runs along the axis (d = 0) or passes
-/// the side by.
-fn side_roots(o: DVec3, d: DVec3, r: f64) -> [Option<f64>; 2] {
-    let a = d.dot(d);
-    if a == 0.0 {
-        return [None, None]; // parallel to the axis: only the caps
-    }
-    let b = -o.dot(d);
-    // b² − a·c = a·(r² − |l|²), l = o + (b/a)·d the closest approach
-    let l = o + (b / a) * d;
-    let discriminant = a * (r * r - l.dot(l));
-    if discriminant.is_nan() || discriminant < 0.0 {
-        return [None, None];
-    }
-    let c = o.dot(o) - r * r;
-    let q = b + b.signum() * discriminant.sqrt();
-    if q == 0.0 {
-        return [Some(0.0), None]; // on the side, tangent to it
-    }
-    [Some(c / q), Some(q / a)]
-}
-// ANCHOR_END: side_roots
 
 /// A cylinder as an object of a scene: its hit, and the tight box of its
 /// two cap discs.

@@ -1,5 +1,6 @@
 use raystep_core::{Aabb, DVec3, Hit, Interval, Ray, Shape};
 
+use crate::sphere_roots::sphere_roots;
 use crate::{BoundingSphere, Primitive};
 
 /// An axis-aligned ellipsoid: the points p with
@@ -46,19 +47,11 @@ impl Ellipsoid {
         let d = ray.direction / self.radii;
         // Step 2: |o + t·d|² = 1, chapter 3's stable quadratic for a unit
         // sphere at the origin.
-        let a = d.dot(d);
-        let b = -o.dot(d);
-        let l = o + (b / a) * d; // the closest approach to the centre
-        let discriminant = a * (1.0 - l.dot(l));
-        if discriminant.is_nan() || discriminant < 0.0 {
-            return None;
-        }
-        let c = o.dot(o) - 1.0;
-        let q = b + b.signum() * discriminant.sqrt();
-        let roots = if q == 0.0 { [0.0, 0.0] } else { [c / q, q / a] };
+        let roots = sphere_roots(o, d, 1.0);
         // Step 3: the nearer root in the interval.
         let t = roots
             .into_iter()
+            .flatten()
             .filter(|&t| interval.contains(t))
             .min_by(f64::total_cmp)?;
         // Step 4: the normal from the gradient of the implicit function,

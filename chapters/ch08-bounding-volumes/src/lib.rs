@@ -26,6 +26,7 @@ mod chapter_shapes;
 mod cylinder;
 mod ellipsoid;
 mod moller_trumbore;
+mod sphere_roots;
 mod triangle;
 
 // Exercise 1: the robust slab test.
@@ -99,7 +100,7 @@ mod bvh;
 mod bvh_build;
 mod bvh_traverse;
 
-pub use bvh::{Bvh, BvhNode, INTERSECTION, Split, TRAVERSAL, area};
+pub use bvh::{Bvh, BvhNode, INTERSECTION, Split, TRAVERSAL};
 pub use bvh_build::MAX_LEAF;
 pub use raystep_world::{Accelerator, Object, World};
 

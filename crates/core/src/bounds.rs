@@ -67,6 +67,16 @@ impl Aabb {
         !(self.min.cmple(self.max).all())
     }
 
+    /// The surface area (0 for an empty or flat box, infinite for an
+    /// unbounded one): the surface area heuristic weighs a box by it.
+    pub fn surface_area(&self) -> f64 {
+        if self.is_empty() {
+            return 0.0;
+        }
+        let d = self.max - self.min;
+        2.0 * (d.x * d.y + d.y * d.z + d.z * d.x)
+    }
+
     /// Is `p` inside or on the boundary?
     pub fn contains(&self, p: DVec3) -> bool {
         self.min.cmple(p).all() && p.cmple(self.max).all()
@@ -145,6 +155,15 @@ mod tests {
             Aabb::new(DVec3::ZERO, DVec3::new(0.0, 1.0, 1.0))
                 .contains(DVec3::Y)
         );
+    }
+
+    #[test]
+    fn surface_area() {
+        let b = Aabb::new(DVec3::ZERO, DVec3::new(1.0, 2.0, 3.0));
+        assert_eq!(b.surface_area(), 22.0);
+        assert_eq!(Aabb::new(DVec3::ZERO, DVec3::X).surface_area(), 0.0);
+        assert_eq!(Aabb::EMPTY.surface_area(), 0.0);
+        assert_eq!(Aabb::EVERYTHING.surface_area(), f64::INFINITY);
     }
 
     #[test]

@@ -118,6 +118,11 @@ fn named_rows<'a, 'b>(
         .light_line_style(WHITE)
         .draw()?;
     draw_log_ticks(root, &mut c, &x, &y)?;
+    // ratio 1: as costly as the sphere, or no gain from the bound
+    c.draw_series(LineSeries::new(
+        [(0.0, y.start), (0.0, y.end)],
+        GREY.stroke_width(1),
+    ))?;
     Ok(c)
 }
 
@@ -187,11 +192,6 @@ fn draw_costs(
         150,
         "cost of one test ÷ the sphere's (log scale)",
     )?;
-    // the sphere's cost: ratio 1
-    c.draw_series(LineSeries::new(
-        [(0.0, -0.6), (0.0, n - 0.4)],
-        GREY.stroke_width(1),
-    ))?;
     for r in rows {
         let colour = if r.rays == "hit" { HIT } else { MISS };
         let dy = if r.rays == "hit" { -4 } else { 4 };
@@ -271,10 +271,6 @@ fn draw_bounding(
         190,
         "speed-up: time per ray alone ÷ behind the bound (log scale)",
     )?;
-    c.draw_series(LineSeries::new(
-        [(0.0, -0.6), (0.0, n - 0.4)],
-        GREY.stroke_width(1),
-    ))?;
     for (k, (kind, colour, _)) in BOUND_KINDS.iter().enumerate() {
         let dy = 6 * (k as i32 - 1);
         c.draw_series(speed_ups.iter().filter(|(r, _)| r.bound == *kind).map(

@@ -11,10 +11,10 @@ use std::hint::black_box;
 use std::path::{Path, PathBuf};
 
 use ch08::{
-    AxisBox, Ball, Blobby, Bound, BoundKind, BoundingSphere, Cylinder, DVec3,
-    Ellipsoid, Interval, Primitive, RandomLines, Ray, Saddle, Shape,
+    Aabb, AxisBox, Ball, Blobby, Bound, BoundKind, BoundingSphere, Cylinder,
+    DVec3, Ellipsoid, Interval, Primitive, RandomLines, Ray, Saddle, Shape,
     TIGHTNESS_SEED, Torus, TorusSolver, Triangle, TriangleMesh, TriangleTest,
-    sampling_sphere,
+    measure_tightness, sampling_sphere,
 };
 use raystep_render::timing::Timing;
 
@@ -376,22 +376,21 @@ pub fn measure_bounding(
             bound,
             rays,
         } = case;
+        // the counts on the same rays, counted by the chapter's own
+        // tightness measurement (no bound: a box around everything)
         let object = objects[*k].1.as_ref() as &dyn Shape;
-        let (mut bound_hits, mut object_hits) = (0, 0);
-        for ray in rays {
-            let on_bound =
-                bound.is_none_or(|b| b.hit(ray, Interval::FORWARD).is_some());
-            bound_hits += u64::from(on_bound);
-            object_hits += u64::from(
-                on_bound && object.intersect(ray, Interval::FORWARD).is_some(),
-            );
-        }
+        let counts = measure_tightness(
+            object,
+            &bound.unwrap_or(Bound::Box(Aabb::EVERYTHING)),
+            rays.len() as u64,
+            TIGHTNESS_SEED,
+        );
         rows.push(BoundingRow {
             object: objects[*k].0.clone(),
             bound: kind.map_or("none", BoundKind::name).to_string(),
             rays: rays.len() as u64,
-            bound_hits,
-            object_hits,
+            bound_hits: counts.bound_hits,
+            object_hits: counts.bound_hits - counts.wasted,
             nanos: ms * 1e6 / rays.len() as f64,
         });
     }
