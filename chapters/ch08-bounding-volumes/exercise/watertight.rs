@@ -25,6 +25,23 @@ pub fn watertight(
     // 2. The shear: Sx = D[kx]/D[kz], Sy = D[ky]/D[kz], Sz = 1/D[kz].
     // 3. For each vertex, P = V − P₀; sheared (x, y) =
     //    (P[kx] − Sx·P[kz], P[ky] − Sy·P[kz]) and z = Sz·P[kz].
+    // 4. Hand the three sheared corners to `sheared_hit`, and fill
+    //    that in below.
+    let _ = (v, ray, interval, sheared_hit);
+    todo!("ch08 exercise 2: watertight")
+}
+// ANCHOR_END: watertight
+
+// ANCHOR: sheared_hit
+/// Steps 4–7 of [`watertight`]: the hit `t`, if the origin of the xy plane
+/// lies inside the sheared triangle (each corner as its `(x, y)` across
+/// the ray and its `z` along it). Chapter 8's fast walk shears each ray's
+/// triangles itself (steps 1–3 once per ray) and then asks this.
+pub(crate) fn sheared_hit(
+    sheared: [(DVec2, f64); 3],
+    interval: Interval,
+) -> Option<f64> {
+    // TODO:
     // 4. The edge functions at the origin, with `edge_function`:
     //    e0 for b → c, e1 for c → a, e2 for a → b.
     // 5. None if some eᵢ > 0 and some eᵢ < 0 (outside), or if
@@ -33,10 +50,10 @@ pub fn watertight(
     //    triangle owns it, `ch02::owns_boundary(from, to)` with the edge
     //    walked as listed if det > 0, reversed if det < 0.
     // 7. t = (e0·za + e1·zb + e2·zc) / det, if the interval contains it.
-    let _ = (v, ray, interval, edge_function);
+    let _ = (sheared, interval, edge_function);
     todo!("ch08 exercise 2: watertight")
 }
-// ANCHOR_END: watertight
+// ANCHOR_END: sheared_hit
 
 // ANCHOR: edge_function
 /// Chapter 2's edge function of the edge `p → q` at the origin,

@@ -99,9 +99,13 @@ pub use tightness::{
 mod bvh;
 mod bvh_build;
 mod bvh_traverse;
+mod mesh_bvh;
+mod mesh_trace;
 
 pub use bvh::{Bvh, BvhNode, INTERSECTION, Split, TRAVERSAL};
 pub use bvh_build::MAX_LEAF;
+pub use mesh_bvh::{MeshBvh, NodePrecision, Ray32, triangle_boxes};
+pub use mesh_trace::{MeshHit, TraceCounts};
 pub use raystep_world::{Accelerator, Object, World};
 
 // ---------------------------------------------------------------------

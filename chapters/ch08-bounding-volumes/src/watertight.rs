@@ -37,6 +37,19 @@ pub fn watertight(
         let xy = DVec2::new(p[kx] - shear.x * p[kz], p[ky] - shear.y * p[kz]);
         (xy, shear.z * p[kz])
     });
+    sheared_hit(sheared, interval)
+}
+// ANCHOR_END: watertight
+
+// ANCHOR: sheared_hit
+/// Steps 4–7 of [`watertight`]: the hit `t`, if the origin of the xy plane
+/// lies inside the sheared triangle (each corner as its `(x, y)` across
+/// the ray and its `z` along it). Chapter 8's fast walk shears each ray's
+/// triangles itself (steps 1–3 once per ray) and then asks this.
+pub(crate) fn sheared_hit(
+    sheared: [(DVec2, f64); 3],
+    interval: Interval,
+) -> Option<f64> {
     let [(a, za), (b, zb), (c, zc)] = sheared;
     // Step 4: the edge functions at the origin, each with an exact sign:
     // e0 for the edge b → c facing vertex a, e1 for c → a, e2 for a → b.
@@ -67,7 +80,7 @@ pub fn watertight(
     let t = (e[0] * za + e[1] * zb + e[2] * zc) / det;
     interval.contains(t).then_some(t)
 }
-// ANCHOR_END: watertight
+// ANCHOR_END: sheared_hit
 
 // ANCHOR: edge_function
 /// Chapter 2's edge function of the edge `p → q` at the origin,

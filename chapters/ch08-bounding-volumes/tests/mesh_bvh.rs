@@ -1,0 +1,330 @@
+//! The fast walk (single-precision rays, nodes in f64, in f32 rounded
+//! outward, and in f32 rounded to nearest) against brute force with the
+//! chapter's own watertight test, on the bunny: camera rays, incoherent
+//! rays, rays aimed at every shared edge, and rays that are not rays.
+//! Disagreements and leaks are counted; for the two robust layouts they
+//! must be 0.
+use std::collections::HashMap;
+use std::path::Path;
+
+use ch08::{
+    Bvh, DVec3, Interval, MeshBvh, MeshHit, NodePrecision, Ray32, Split,
+    TraceCounts, camera_rays, incoherent_rays, triangle_boxes, watertight,
+};
+use raystep_core::glam::Vec3;
+use raystep_scene::Mesh;
+
+fn bunny() -> Vec<[DVec3; 3]> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/meshes/bunny.obj");
+    let mesh = Mesh::load_obj(&path).unwrap_or_else(|e| {
+        panic!("{e} (the bunny lives in ../shared/meshes beside the workspace)")
+    });
+    (0..mesh.triangles.len())
+        .map(|k| mesh.triangle(k))
+        .collect()
+}
+
+fn trees(triangles: &[[DVec3; 3]]) -> Vec<(NodePrecision, MeshBvh)> {
+    let tree =
+        Bvh::build(&triangle_boxes(triangles), Split::BinnedSah { bins: 16 });
+    NodePrecision::ALL
+        .iter()
+        .map(|&p| (p, MeshBvh::new(triangles, &tree, p)))
+        .collect()
+}
+
+/// Two answers agree if both miss, or both hit at the same `t` (the
+/// triangle may differ only on a tie: two triangles at exactly that `t`).
+fn agree(a: Option<MeshHit>, b: Option<MeshHit>) -> bool {
+    match (a, b) {
+        (None, None) => true,
+        (Some(a), Some(b)) => a.t == b.t,
+        _ => false,
+    }
+}
+
+fn rays(triangles: &[[DVec3; 3]]) -> Vec<Ray32> {
+    let bounds =
+        raystep_core::Aabb::around(triangles.iter().flatten().copied());
+    let sphere = ch08::BoundingSphere::around_box(&bounds);
+    camera_rays(sphere, 40)
+        .iter()
+        .chain(&incoherent_rays(bounds, 1600, 7))
+        .map(Ray32::rounded)
+        .collect()
+}
+
+#[test]
+fn brute_force_is_the_chapters_watertight_test() {
+    let triangles = bunny();
+    let (_, bvh) = &trees(&triangles)[0];
+    let mut differences = 0;
+    for ray in rays(&triangles).iter().step_by(7) {
+        let wide = ray.to_ray();
+        let mut interval = Interval::FORWARD;
+        let mut reference = None;
+        for (k, v) in triangles.iter().enumerate() {
+            if let Some(t) = watertight(v, &wide, interval) {
+                interval = interval.with_max(t);
+                reference = Some(MeshHit {
+                    triangle: k as u32,
+                    t,
+                });
+            }
+        }
+        if bvh.brute_force(ray, Interval::FORWARD) != reference {
+            differences += 1;
+        }
+    }
+    assert_eq!(differences, 0);
+}
+
+#[test]
+fn every_layout_agrees_with_brute_force_on_the_bunny() {
+    let triangles = bunny();
+    let rays = rays(&triangles);
+    let trees = trees(&triangles);
+    let truths: Vec<_> = rays
+        .iter()
+        .map(|ray| trees[0].1.brute_force(ray, Interval::FORWARD))
+        .collect();
+    let mut table = String::new();
+    for (precision, bvh) in trees {
+        let (mut closest, mut any) = (0, 0);
+        let mut counts = TraceCounts::default();
+        for (ray, &truth) in rays.iter().zip(&truths) {
+            let hit = bvh.closest_hit(ray, Interval::FORWARD, &mut counts);
+            if !agree(hit, truth) {
+                closest += 1;
+            }
+            let blocked = bvh.any_hit(ray, Interval::FORWARD, &mut counts);
+            if blocked != truth.is_some() {
+                any += 1;
+            }
+        }
+        if precision != NodePrecision::SingleNearest {
+            assert_eq!((closest, any), (0, 0), "{}", precision.name());
+        }
+        table += &format!(
+            "{:<12} rays {} closest-hit disagreements {closest} \
+             any-hit {any}\n",
+            precision.name(),
+            rays.len()
+        );
+    }
+    insta::assert_snapshot!(table);
+}
+
+/// Every edge two triangles share, aimed at from the camera through
+/// points along it (its midpoint and quarter points): the watertight test
+/// and a robust walk let none through. A *leak* is a ray aimed at a point
+/// on the surface that hits nothing at or before it.
+fn leaks(triangles: &[[DVec3; 3]], points: &[f64]) -> (usize, [usize; 4]) {
+    let mut edges: HashMap<[[u64; 3]; 2], Vec<usize>> = HashMap::new();
+    let key = |p: DVec3| p.to_array().map(f64::to_bits);
+    for (k, v) in triangles.iter().enumerate() {
+        for i in 0..3 {
+            let (a, b) = (key(v[i]), key(v[(i + 1) % 3]));
+            let edge = if a < b { [a, b] } else { [b, a] };
+            edges.entry(edge).or_default().push(k);
+        }
+    }
+    let normal = |v: &[DVec3; 3]| (v[1] - v[0]).cross(v[2] - v[0]).normalize();
+    let from = |k: [u64; 3]| DVec3::from_array(k.map(f64::from_bits));
+    let bounds =
+        raystep_core::Aabb::around(triangles.iter().flatten().copied());
+    let (centre, size) =
+        (0.5 * (bounds.min + bounds.max), bounds.max - bounds.min);
+    let eye = (centre + DVec3::new(0.3, 0.2, 3.0) * size.length()).as_vec3();
+    let mut aimed = 0;
+    let mut leaks = [0usize; 4];
+    let trees = trees(triangles);
+    for (&[a, b], sharing) in &edges {
+        let &[i, j] = sharing.as_slice() else {
+            continue; // a border edge, or more than two triangles
+        };
+        for &s in points {
+            let target = from(a).lerp(from(b), s);
+            let ray = Ray32 {
+                origin: eye,
+                direction: (target - eye.as_dvec3()).as_vec3(),
+            };
+            // Not at a silhouette: the ray sees both triangles from the
+            // same side, and neither edge-on.
+            let d = ray.direction.as_dvec3().normalize();
+            let (ci, cj) =
+                (normal(&triangles[i]).dot(d), normal(&triangles[j]).dot(d));
+            if ci * cj <= 0.0 || ci.abs() < 0.05 || cj.abs() < 0.05 {
+                continue;
+            }
+            // The target is (to rounding) on the surface at t = 1; allow
+            // for the rounding of the ray to f32.
+            let reach = Interval::new(0.0, 1.0 + 1e-4);
+            aimed += 1;
+            for (k, (_, bvh)) in trees.iter().enumerate() {
+                let mut counts = TraceCounts::default();
+                if bvh.closest_hit(&ray, reach, &mut counts).is_none() {
+                    leaks[k] += 1;
+                }
+            }
+            if trees[0].1.brute_force(&ray, reach).is_none() {
+                leaks[3] += 1;
+            }
+        }
+    }
+    (aimed, leaks)
+}
+
+#[test]
+fn no_ray_leaks_through_a_shared_edge() {
+    let bunny = bunny();
+    // The bunny as read (its corners are f32 numbers), and moved 1000
+    // away and shrunk by 3 (corners no f32 can hold: nodes rounded).
+    let moved: Vec<_> = bunny
+        .iter()
+        .map(|v| v.map(|p| p / 3.0 + DVec3::new(1000.0, -700.0, 300.0)))
+        .collect();
+    // A floor of square tiles 0.1 wide (no f32 holds 0.1): its edges lie
+    // on the faces of the leaves' boxes.
+    let mut floor = Vec::new();
+    for i in 0..24 {
+        for j in 0..24 {
+            let corner = |a: i32, b: i32| {
+                DVec3::new(0.1 * f64::from(a), 0.3, 0.1 * f64::from(b))
+            };
+            let [p, q, r, s] = [(i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)]
+                .map(|(a, b)| corner(a, b));
+            floor.extend([[p, s, q], [q, s, r]]);
+        }
+    }
+    let mut table = String::new();
+    for (name, triangles, points) in [
+        ("bunny", &bunny, &[0.5][..]),
+        ("bunny moved", &moved, &[0.5][..]),
+        ("tiled floor", &floor, &[0.1, 0.3, 0.5, 0.7, 0.9][..]),
+    ] {
+        let (aimed, leaks) = leaks(triangles, points);
+        assert!(aimed > 4_000, "{name}: {aimed}");
+        assert_eq!(
+            leaks[..2],
+            [0, 0],
+            "{name}: leaks through f64 and f32 nodes (brute force: {})",
+            leaks[3]
+        );
+        assert_eq!(leaks[3], 0, "{name}: leaks by brute force");
+        table += &format!(
+            "{name}: {aimed} rays aimed at shared edges (no silhouettes)\n\
+             leaks: f64 nodes {}, f32 nodes {}, f32 rounded to nearest {}, \
+             brute force {}\n",
+            leaks[0], leaks[1], leaks[2], leaks[3]
+        );
+    }
+    insta::assert_snapshot!(table);
+}
+
+#[test]
+fn rays_that_are_not_rays_are_answered_without_a_panic() {
+    let triangles = bunny();
+    let bad = [
+        Ray32 {
+            origin: Vec3::new(f32::NAN, 0.0, 0.0),
+            direction: Vec3::Z,
+        },
+        Ray32 {
+            origin: Vec3::ZERO,
+            direction: Vec3::new(0.0, f32::INFINITY, 0.0),
+        },
+        Ray32 {
+            origin: Vec3::ZERO,
+            direction: Vec3::ZERO,
+        },
+        Ray32 {
+            origin: Vec3::new(0.0, f32::NEG_INFINITY, 0.0),
+            direction: Vec3::Y,
+        },
+    ];
+    for (_, bvh) in trees(&triangles) {
+        for ray in &bad {
+            let mut counts = TraceCounts::default();
+            assert_eq!(
+                bvh.closest_hit(ray, Interval::FORWARD, &mut counts),
+                None
+            );
+            assert!(!bvh.any_hit(ray, Interval::FORWARD, &mut counts));
+            assert_eq!(counts, TraceCounts::default(), "traced {ray:?}");
+        }
+    }
+}
+
+/// Degenerate meshes: none, one triangle, all centroids equal, all in one
+/// plane, zero-area triangles, far from the origin.
+#[test]
+fn degenerate_meshes_agree_with_brute_force() {
+    let t = |a: [f64; 3], b: [f64; 3], c: [f64; 3]| {
+        [DVec3::from(a), DVec3::from(b), DVec3::from(c)]
+    };
+    let mut cases: Vec<(&str, Vec<[DVec3; 3]>)> = vec![
+        ("none", vec![]),
+        (
+            "one",
+            vec![t([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0])],
+        ),
+    ];
+    let mut same = Vec::new();
+    let mut flat = Vec::new();
+    let mut zero = Vec::new();
+    for k in 0..64 {
+        let a = k as f64 * 0.37;
+        let (c, s) = (a.cos(), a.sin());
+        same.push(t([c, s, 0.0], [-c, -s, 0.1], [s, -c, -0.1]));
+        let (x, y) = ((k % 8) as f64, (k / 8) as f64);
+        flat.push(t([x, y, 0.0], [x + 1.0, y, 0.0], [x, y + 1.0, 0.0]));
+        zero.push(t([x, y, 0.0], [x + 1.0, y, 0.0], [x + 2.0, y, 0.0]));
+        zero.push(t([x, y, 0.5], [x + 1.0, y + 0.5, 0.5], [x, y, 0.5]));
+    }
+    let far: Vec<_> = flat
+        .iter()
+        .map(|v| v.map(|p| p + DVec3::splat(1e6)))
+        .collect();
+    cases.extend([
+        ("same centroid", same),
+        ("coplanar", flat),
+        ("zero area", zero),
+        ("offset 1e6", far),
+    ]);
+    for (name, triangles) in cases {
+        let b = raystep_core::Aabb::around(
+            triangles.iter().flatten().copied().chain([DVec3::ZERO]),
+        );
+        let centre = 0.5 * (b.min + b.max);
+        let mut disagreements = 0;
+        for (precision, bvh) in trees(&triangles) {
+            let mut seed = 11u64;
+            for _ in 0..500 {
+                let mut next = || {
+                    seed =
+                        seed.wrapping_mul(6364136223846793005).wrapping_add(1);
+                    (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+                };
+                let origin =
+                    centre + DVec3::new(next(), next(), 2.0 + next()) * 8.0;
+                let target = centre + DVec3::new(next(), next(), next()) * 8.0;
+                let ray = Ray32 {
+                    origin: origin.as_vec3(),
+                    direction: (target - origin).as_vec3(),
+                };
+                let mut counts = TraceCounts::default();
+                let truth = bvh.brute_force(&ray, Interval::FORWARD);
+                let hit = bvh.closest_hit(&ray, Interval::FORWARD, &mut counts);
+                let any = bvh.any_hit(&ray, Interval::FORWARD, &mut counts);
+                if precision != NodePrecision::SingleNearest
+                    && (!agree(hit, truth) || any != truth.is_some())
+                {
+                    disagreements += 1;
+                }
+            }
+        }
+        assert_eq!(disagreements, 0, "{name}");
+    }
+}
