@@ -105,7 +105,7 @@ mod mesh_trace;
 pub use bvh::{Bvh, BvhNode, INTERSECTION, Split, TRAVERSAL};
 pub use bvh_build::MAX_LEAF;
 pub use mesh_bvh::{MeshBvh, NodePrecision, Ray32, triangle_boxes};
-pub use mesh_trace::{MeshHit, TraceCounts};
+pub use mesh_trace::{MeshHit, PreparedRay, TraceCounts};
 pub use raystep_world::{Accelerator, Object, World};
 
 // ---------------------------------------------------------------------

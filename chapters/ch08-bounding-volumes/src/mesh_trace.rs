@@ -38,7 +38,10 @@ const GAMMA3_F32: f32 = 3.0 * (f32::EPSILON / 2.0) / (1.0 - 1.5 * f32::EPSILON);
 const GAMMA3_F64: f64 = 3.0 * (f64::EPSILON / 2.0) / (1.0 - 1.5 * f64::EPSILON);
 
 /// Step 1 of every walk: the ray's part of every test, once.
-struct Prepared {
+///
+/// Public so that other hierarchies (the benchmark's peers) can be handed
+/// the very same triangle test: [`PreparedRay::triangle`].
+pub struct PreparedRay {
     /// The origin, and the watertight test's axes and shear.
     origin: DVec3,
     axes: [usize; 3],
@@ -53,8 +56,9 @@ struct Prepared {
     negative: [usize; 3],
 }
 
-impl Prepared {
-    fn new(ray: &Ray32) -> Prepared {
+impl PreparedRay {
+    /// The ray's reciprocal direction and shear.
+    pub fn new(ray: &Ray32) -> PreparedRay {
         let d = ray.direction.as_dvec3();
         // The watertight test's steps 1 and 2 (see `watertight`).
         let kz = d.abs().max_position();
@@ -63,7 +67,7 @@ impl Prepared {
             std::mem::swap(&mut kx, &mut ky);
         }
         let inverse32 = ray.direction.to_array().map(|x| 1.0 / x);
-        Prepared {
+        PreparedRay {
             origin: ray.origin.as_dvec3(),
             axes: [kx, ky, kz],
             shear: DVec3::new(d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]),
@@ -80,7 +84,7 @@ impl Prepared {
     /// [`watertight`](crate::watertight) gives, computed in the same
     /// order.
     #[inline]
-    fn triangle(&self, v: &[DVec3; 3], interval: Interval) -> Option<f64> {
+    pub fn triangle(&self, v: &[DVec3; 3], interval: Interval) -> Option<f64> {
         let [kx, ky, kz] = self.axes;
         let s = self.shear;
         let sheared = v.map(|vertex| {
@@ -94,9 +98,14 @@ impl Prepared {
 
 /// A node's box test and link, in whatever precision it is stored.
 trait SlabNode {
+    /// The interval in the test's precision, its end already widened.
+    type Span: Copy;
+    /// `interval` as the test wants it (computed when it changes, not
+    /// for every box).
+    fn span(interval: Interval) -> Self::Span;
     /// The `t` at which the ray enters the box, if it meets the box
-    /// within `[t_min, t_max]`.
-    fn enter(&self, ray: &Prepared, t_min: f64, t_max: f64) -> Option<f64>;
+    /// within the span.
+    fn enter(&self, ray: &PreparedRay, span: Self::Span) -> Option<f64>;
     /// `(first, count)`, as in [`BvhNode`](crate::BvhNode).
     fn link(&self) -> (u32, u32);
     /// The farthest entry `t` the box test lets through for an interval
@@ -106,9 +115,15 @@ trait SlabNode {
 }
 
 impl SlabNode for &Node64 {
+    type Span = (f64, f64);
+
+    fn span(interval: Interval) -> (f64, f64) {
+        (interval.min, interval.max * (1.0 + 2.0 * GAMMA3_F64))
+    }
+
     #[inline]
-    fn enter(&self, ray: &Prepared, t_min: f64, t_max: f64) -> Option<f64> {
-        let (mut near, mut far) = (t_min, t_max * (1.0 + 2.0 * GAMMA3_F64));
+    fn enter(&self, ray: &PreparedRay, span: (f64, f64)) -> Option<f64> {
+        let (mut near, mut far) = span;
         #[allow(clippy::needless_range_loop)] // one axis of five arrays
         for axis in 0..3 {
             // Part 1's slab test: near and far planes chosen by the
@@ -143,13 +158,12 @@ impl Node32 {
     #[inline]
     fn slab(
         &self,
-        ray: &Prepared,
-        t_min: f32,
-        t_max: f32,
+        ray: &PreparedRay,
+        (t_min, t_max): (f32, f32),
         widen: f32,
     ) -> Option<f32> {
         let bounds = [self.min, self.max];
-        let (mut near, mut far) = (t_min, t_max * widen);
+        let (mut near, mut far) = (t_min, t_max);
         #[allow(clippy::needless_range_loop)] // one axis of five arrays
         for axis in 0..3 {
             let s = ray.negative[axis];
@@ -164,12 +178,20 @@ impl Node32 {
 }
 
 impl SlabNode for Robust<'_> {
-    #[inline]
-    fn enter(&self, ray: &Prepared, t_min: f64, t_max: f64) -> Option<f64> {
-        // The interval's ends in f32, rounded outward.
+    type Span = (f32, f32);
+
+    fn span(interval: Interval) -> (f32, f32) {
+        // The interval's ends in f32, rounded outward, the end widened.
         let widen = 1.0 + 2.0 * GAMMA3_F32;
-        let (lo, hi) = (outward(t_min, false), outward(t_max, true));
-        self.0.slab(ray, lo, hi, widen).map(f64::from)
+        let hi = outward(interval.max, true) * widen;
+        (outward(interval.min, false), hi)
+    }
+
+    #[inline]
+    fn enter(&self, ray: &PreparedRay, span: (f32, f32)) -> Option<f64> {
+        self.0
+            .slab(ray, span, 1.0 + 2.0 * GAMMA3_F32)
+            .map(f64::from)
     }
 
     fn link(&self) -> (u32, u32) {
@@ -183,11 +205,15 @@ impl SlabNode for Robust<'_> {
 }
 
 impl SlabNode for Plain<'_> {
+    type Span = (f32, f32);
+
+    fn span(interval: Interval) -> (f32, f32) {
+        (interval.min as f32, interval.max as f32)
+    }
+
     #[inline]
-    fn enter(&self, ray: &Prepared, t_min: f64, t_max: f64) -> Option<f64> {
-        self.0
-            .slab(ray, t_min as f32, t_max as f32, 1.0)
-            .map(f64::from)
+    fn enter(&self, ray: &PreparedRay, span: (f32, f32)) -> Option<f64> {
+        self.0.slab(ray, span, 1.0).map(f64::from)
     }
 
     fn link(&self) -> (u32, u32) {
@@ -212,7 +238,7 @@ impl MeshBvh {
         if !ray.is_valid() {
             return None;
         }
-        let ray = Prepared::new(ray);
+        let ray = PreparedRay::new(ray);
         match &self.nodes {
             Nodes::Double(n) => self.closest(n, |n| n, &ray, interval, counts),
             Nodes::Single(n) => self.closest(n, Robust, &ray, interval, counts),
@@ -232,7 +258,7 @@ impl MeshBvh {
         if !ray.is_valid() {
             return false;
         }
-        let ray = Prepared::new(ray);
+        let ray = PreparedRay::new(ray);
         match &self.nodes {
             Nodes::Double(n) => self.any(n, |n| n, &ray, interval, counts),
             Nodes::Single(n) => self.any(n, Robust, &ray, interval, counts),
@@ -252,7 +278,7 @@ impl MeshBvh {
         if !ray.is_valid() {
             return None;
         }
-        let ray = Prepared::new(ray);
+        let ray = PreparedRay::new(ray);
         let mut interval = interval;
         let mut closest = None;
         for (k, v) in self.all.iter().enumerate() {
@@ -274,7 +300,7 @@ impl MeshBvh {
         &self,
         nodes: &'a [N],
         view: impl Fn(&'a N) -> V,
-        ray: &Prepared,
+        ray: &PreparedRay,
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
@@ -289,9 +315,10 @@ impl MeshBvh {
             }
         }
         // Step 2: a stack of (node, entry t); the depth bounds its size.
-        let mut stack: Vec<(u32, f64)> = Vec::with_capacity(self.depth + 1);
+        let mut stack = Stack::new(self.depth + 1, (0, 0.0));
+        let mut span = V::span(interval);
         if let Some(root) = nodes.first()
-            && let Some(t) = view(root).enter(ray, interval.min, interval.max)
+            && let Some(t) = view(root).enter(ray, span)
         {
             stack.push((0, t));
         }
@@ -310,6 +337,7 @@ impl MeshBvh {
                     counts.triangles += 1;
                     if let Some(t) = ray.triangle(&self.corners[k], interval) {
                         interval = interval.with_max(t);
+                        span = V::span(interval);
                         closest = Some(MeshHit {
                             triangle: self.ids[k],
                             t,
@@ -321,14 +349,17 @@ impl MeshBvh {
             // Step 5: both children's boxes; the nearer is pushed last so
             // that it is visited first.
             let (a, b) = (first, first + 1);
-            let (lo, hi) = (interval.min, interval.max);
-            let ta = view(&nodes[a as usize]).enter(ray, lo, hi);
-            let tb = view(&nodes[b as usize]).enter(ray, lo, hi);
+            let ta = view(&nodes[a as usize]).enter(ray, span);
+            let tb = view(&nodes[b as usize]).enter(ray, span);
             match (ta, tb) {
                 (Some(ta), Some(tb)) if tb < ta => {
-                    stack.extend([(a, ta), (b, tb)])
+                    stack.push((a, ta));
+                    stack.push((b, tb));
                 }
-                (Some(ta), Some(tb)) => stack.extend([(b, tb), (a, ta)]),
+                (Some(ta), Some(tb)) => {
+                    stack.push((b, tb));
+                    stack.push((a, ta));
+                }
                 (Some(ta), None) => stack.push((a, ta)),
                 (None, Some(tb)) => stack.push((b, tb)),
                 (None, None) => {}
@@ -343,7 +374,7 @@ impl MeshBvh {
         &self,
         nodes: &'a [N],
         view: impl Fn(&'a N) -> V,
-        ray: &Prepared,
+        ray: &PreparedRay,
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> bool {
@@ -353,19 +384,21 @@ impl MeshBvh {
                 return true;
             }
         }
-        let mut stack: Vec<u32> = Vec::with_capacity(self.depth + 1);
+        let mut stack = Stack::new(self.depth + 1, 0);
+        let span = V::span(interval);
         if !nodes.is_empty() {
             stack.push(0);
         }
         while let Some(k) = stack.pop() {
             let node = view(&nodes[k as usize]);
-            if node.enter(ray, interval.min, interval.max).is_none() {
+            if node.enter(ray, span).is_none() {
                 continue;
             }
             counts.nodes += 1;
             let (first, count) = node.link();
             if count == 0 {
-                stack.extend([first, first + 1]);
+                stack.push(first);
+                stack.push(first + 1);
                 continue;
             }
             for k in first as usize..(first + count) as usize {
@@ -376,5 +409,56 @@ impl MeshBvh {
             }
         }
         false
+    }
+}
+
+/// The walk's stack: on the call stack for trees up to 64 deep (no heap
+/// allocation per ray), on the heap for deeper ones. `capacity` (the
+/// tree's depth + 1) is never exceeded: each visit pops one node and
+/// pushes at most two.
+struct Stack<T: Copy> {
+    fixed: [T; 64],
+    spilled: Vec<T>,
+    deep: bool,
+    len: usize,
+}
+
+impl<T: Copy> Stack<T> {
+    #[inline]
+    fn new(capacity: usize, zero: T) -> Stack<T> {
+        let deep = capacity > 64;
+        Stack {
+            fixed: [zero; 64],
+            spilled: if deep {
+                vec![zero; capacity]
+            } else {
+                Vec::new()
+            },
+            deep,
+            len: 0,
+        }
+    }
+
+    #[inline]
+    fn push(&mut self, value: T) {
+        if self.deep {
+            self.spilled[self.len] = value;
+        } else {
+            self.fixed[self.len] = value;
+        }
+        self.len += 1;
+    }
+
+    #[inline]
+    fn pop(&mut self) -> Option<T> {
+        if self.len == 0 {
+            return None;
+        }
+        self.len -= 1;
+        Some(if self.deep {
+            self.spilled[self.len]
+        } else {
+            self.fixed[self.len]
+        })
     }
 }

@@ -14,6 +14,7 @@
 //!   exercise stubs, for students.
 
 mod atomic_file;
+mod bench;
 mod book;
 mod chapters;
 mod check;
@@ -114,6 +115,74 @@ enum Command {
         /// (`bvh`, binned SAH); the image is the same.
         #[arg(long, value_enum, default_value_t = render::Accel::Brute)]
         accel: render::Accel,
+    },
+    /// Time chapter 8's hierarchies on a triangle mesh (build, trace, the
+    /// work per ray), beside obvhs and bvh with `--peers`.
+    ///
+    /// Ray sets: `primary` (a SIZE × SIZE pinhole camera fitted to the
+    /// mesh), `shadow` (from a point light to every primary hit; any hit),
+    /// `incoherent` (origins on a sphere of 1.5 bounding radii aimed at
+    /// uniform points in the box; seeded); or `--rays FILE`. Every method
+    /// is built and traced on the same triangles and rays, round after
+    /// round, taking turns; times are medians. Every answer is checked
+    /// against the first method's, a sample of rays against brute force.
+    /// The peers need a raystep built with them:
+    /// `cargo run --release --features peers -- bench MESH --peers`.
+    Bench {
+        /// The OBJ mesh, e.g. ../shared/meshes/bunny.obj.
+        mesh: PathBuf,
+        /// Trace these rays instead (records of six little-endian f32:
+        /// origin xyz, direction xyz), for the closest hit.
+        #[arg(long, value_name = "FILE")]
+        rays: Option<PathBuf>,
+        /// The primary camera's image is SIZE × SIZE pixels.
+        #[arg(long, value_name = "SIZE", default_value_t = 1024,
+              value_parser = clap::value_parser!(u32).range(1..=8192))]
+        size: u32,
+        /// How many incoherent rays.
+        #[arg(long, value_name = "N", default_value_t = 1 << 20)]
+        incoherent: usize,
+        /// The incoherent rays' seed.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Threads tracing.
+        #[arg(long, value_name = "N", default_value_t = 1,
+              value_parser = clap::value_parser!(u16).range(1..=1024))]
+        threads: u16,
+        /// Rounds; times are medians over them.
+        #[arg(long, value_name = "N", default_value_t = 3,
+              value_parser = clap::value_parser!(u16).range(1..=100))]
+        rounds: u16,
+        /// Our builders, comma-separated.
+        #[arg(
+            long,
+            value_enum,
+            value_delimiter = ',',
+            default_value = "sah16"
+        )]
+        builders: Vec<bench::BuilderArg>,
+        /// Our node precisions, comma-separated (each builder with each).
+        #[arg(
+            long,
+            value_enum,
+            value_delimiter = ',',
+            default_value = "f32,f64"
+        )]
+        precision: Vec<bench::PrecisionArg>,
+        /// Also run obvhs (Bvh2, CwBvh) and bvh on the same input.
+        #[arg(long)]
+        peers: bool,
+        /// Rays of each set checked against brute force (evenly spread).
+        #[arg(long, value_name = "N", default_value_t = 1000)]
+        brute_force: usize,
+        /// Also write the report as JSON to this file.
+        #[arg(long, value_name = "FILE")]
+        json: Option<PathBuf>,
+        /// Write the first method's answers on the first set (records of
+        /// little-endian f32 t, +inf for a miss, and u32 triangle,
+        /// u32::MAX for a miss).
+        #[arg(long, value_name = "FILE")]
+        write_hits: Option<PathBuf>,
     },
     /// Run a chapter's tests in student mode and report each exercise.
     ///
@@ -376,6 +445,35 @@ fn main() -> ExitCode {
             threads,
             chapter,
             accel,
+        }),
+        Command::Bench {
+            mesh,
+            rays,
+            size,
+            incoherent,
+            seed,
+            threads,
+            rounds,
+            builders,
+            precision,
+            peers,
+            brute_force,
+            json,
+            write_hits,
+        } => bench::run(&bench::Options {
+            mesh,
+            rays,
+            size,
+            incoherent,
+            seed,
+            threads: usize::from(threads),
+            rounds: usize::from(rounds),
+            builders,
+            precisions: precision,
+            peers,
+            brute_force,
+            json,
+            write_hits,
         }),
         Command::Check {
             chapter,

@@ -1,0 +1,177 @@
+//! What a benchmark compares: our hierarchy (a builder and a node
+//! precision) and, with the `peers` feature, other libraries' — each
+//! built on the same triangles and asked through one trait.
+use std::time::Instant;
+
+use ch08::{
+    Bvh, MeshBvh, NodePrecision, PreparedRay, Ray32, Split, TraceCounts,
+    triangle_boxes,
+};
+use raystep_core::{DVec3, Interval};
+
+/// A built structure's answers. Hits are `(triangle, t)`, with `t` in
+/// `f32` (what the peers report, and the hit file holds).
+pub trait Tracer: Sync {
+    /// The closest hit within `interval`.
+    fn closest(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> Option<(u32, f32)>;
+    /// Is anything hit within `interval`?
+    fn any(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> bool;
+}
+
+/// One method of the comparison.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Method {
+    /// Our hierarchy: a builder, and the precision of its nodes.
+    Ours(Split, NodePrecision),
+    /// obvhs's `Bvh2` (PLOC, reinsertion, leaves collapsed by the SAH;
+    /// its `medium_build` preset), walked by its own traversal.
+    ObvhsBvh2,
+    /// obvhs's compressed 8-wide `CwBvh` (same preset).
+    ObvhsCwBvh,
+    /// The `bvh` crate (svenstaro): its binned-SAH build and its
+    /// traversal iterator.
+    BvhCrate,
+}
+
+/// What building gave: the tracer and what it is made of.
+pub struct Built {
+    /// Asks the structure.
+    pub tracer: Box<dyn Tracer>,
+    /// Milliseconds from the triangles' boxes to a tracer.
+    pub build_ms: f64,
+    /// Bytes of nodes and reordered triangles (`None`: not known).
+    pub bytes: Option<usize>,
+    /// Our trees only: the SAH cost, node count and depth.
+    pub tree: Option<(f64, usize, usize)>,
+}
+
+impl Method {
+    /// The name tables show, e.g. `ours: SAH, 16 bins, f32`.
+    pub fn name(&self) -> String {
+        match self {
+            Method::Ours(split, precision) => {
+                format!("ours: {}, {}", split.name(), precision.name())
+            }
+            Method::ObvhsBvh2 => "obvhs Bvh2".into(),
+            Method::ObvhsCwBvh => "obvhs CwBvh".into(),
+            Method::BvhCrate => "bvh".into(),
+        }
+    }
+
+    /// Is this one of ours?
+    pub fn is_ours(&self) -> bool {
+        matches!(self, Method::Ours(..))
+    }
+
+    /// The peers this build was compiled with (none without the `peers`
+    /// feature).
+    pub fn peers() -> Vec<Method> {
+        if cfg!(feature = "peers") {
+            vec![Method::ObvhsBvh2, Method::ObvhsCwBvh, Method::BvhCrate]
+        } else {
+            Vec::new()
+        }
+    }
+
+    /// Builds the structure over `triangles`, timed.
+    pub fn build(&self, triangles: &[[DVec3; 3]]) -> Built {
+        match *self {
+            Method::Ours(split, precision) => {
+                let start = Instant::now();
+                let tree = Bvh::build(&triangle_boxes(triangles), split);
+                let bvh = MeshBvh::new(triangles, &tree, precision);
+                let build_ms = start.elapsed().as_secs_f64() * 1e3;
+                Built {
+                    build_ms,
+                    bytes: Some(bvh.bytes()),
+                    tree: Some((
+                        tree.sah_cost(),
+                        tree.nodes.len(),
+                        tree.depth(),
+                    )),
+                    tracer: Box::new(Ours(bvh)),
+                }
+            }
+            #[cfg(feature = "peers")]
+            peer => crate::peers::build(peer, triangles),
+            #[cfg(not(feature = "peers"))]
+            _ => unreachable!("peers are built with the `peers` feature"),
+        }
+    }
+}
+
+struct Ours(MeshBvh);
+
+impl Tracer for Ours {
+    fn closest(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> Option<(u32, f32)> {
+        let hit = self.0.closest_hit(ray, interval, counts)?;
+        Some((hit.triangle, hit.t as f32))
+    }
+
+    fn any(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> bool {
+        self.0.any_hit(ray, interval, counts)
+    }
+}
+
+/// Brute force with the chapter's watertight test: every triangle.
+pub struct BruteForce<'a>(pub &'a [[DVec3; 3]]);
+
+impl Tracer for BruteForce<'_> {
+    fn closest(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> Option<(u32, f32)> {
+        if !ray.is_valid() {
+            return None;
+        }
+        let prepared = PreparedRay::new(ray);
+        let mut interval = interval;
+        let mut closest = None;
+        for (k, v) in self.0.iter().enumerate() {
+            counts.triangles += 1;
+            if let Some(t) = prepared.triangle(v, interval) {
+                interval = interval.with_max(t);
+                closest = Some((k as u32, t as f32));
+            }
+        }
+        closest
+    }
+
+    fn any(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> bool {
+        if !ray.is_valid() {
+            return false;
+        }
+        let prepared = PreparedRay::new(ray);
+        self.0.iter().any(|v| {
+            counts.triangles += 1;
+            prepared.triangle(v, interval).is_some()
+        })
+    }
+}

@@ -1,0 +1,127 @@
+//! `raystep bench MESH.obj`: build and trace times of chapter 8's
+//! hierarchies on a triangle mesh, beside obvhs and bvh (`--peers`).
+use std::io::IsTerminal;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use ch08::{NodePrecision, Split};
+use raystep_bench::{BenchOptions, hit_bytes, run as run_bench};
+
+use crate::{Error, atomic_file};
+
+/// `--builders`: our tree builders, by short name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum BuilderArg {
+    /// Split at the middle of the centroids' box.
+    Midpoint,
+    /// Split at the median centroid.
+    Median,
+    /// Binned SAH, 4 bins.
+    Sah4,
+    /// Binned SAH, 8 bins.
+    Sah8,
+    /// Binned SAH, 16 bins.
+    Sah16,
+    /// Binned SAH, 32 bins.
+    Sah32,
+}
+
+impl BuilderArg {
+    fn split(self) -> Split {
+        match self {
+            BuilderArg::Midpoint => Split::Midpoint,
+            BuilderArg::Median => Split::Median,
+            BuilderArg::Sah4 => Split::BinnedSah { bins: 4 },
+            BuilderArg::Sah8 => Split::BinnedSah { bins: 8 },
+            BuilderArg::Sah16 => Split::BinnedSah { bins: 16 },
+            BuilderArg::Sah32 => Split::BinnedSah { bins: 32 },
+        }
+    }
+}
+
+/// `--precision`: how our nodes store their boxes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum PrecisionArg {
+    /// f64 boxes.
+    F64,
+    /// f32 boxes rounded outward, exits widened (never misses).
+    F32,
+    /// f32 boxes rounded to nearest, no widening (may miss).
+    F32Nearest,
+}
+
+impl PrecisionArg {
+    fn precision(self) -> NodePrecision {
+        match self {
+            PrecisionArg::F64 => NodePrecision::Double,
+            PrecisionArg::F32 => NodePrecision::Single,
+            PrecisionArg::F32Nearest => NodePrecision::SingleNearest,
+        }
+    }
+}
+
+/// What `raystep bench` was asked to do.
+#[derive(Debug)]
+pub struct Options {
+    /// The OBJ mesh.
+    pub mesh: PathBuf,
+    /// A ray file instead of the generated sets.
+    pub rays: Option<PathBuf>,
+    /// The primary camera's image size.
+    pub size: u32,
+    /// Incoherent rays.
+    pub incoherent: usize,
+    /// Their seed.
+    pub seed: u64,
+    /// Threads.
+    pub threads: usize,
+    /// Rounds.
+    pub rounds: usize,
+    /// Our builders.
+    pub builders: Vec<BuilderArg>,
+    /// Our precisions.
+    pub precisions: Vec<PrecisionArg>,
+    /// Run obvhs and bvh too.
+    pub peers: bool,
+    /// Rays per set checked against brute force.
+    pub brute_force: usize,
+    /// The JSON report.
+    pub json: Option<PathBuf>,
+    /// The hit file.
+    pub write_hits: Option<PathBuf>,
+}
+
+/// Runs the benchmark, prints its table and writes the files asked for.
+/// The output folders are checked first, and the files are written whole
+/// once everything has run: a failure leaves no partial file.
+pub fn run(options: &Options) -> Result<ExitCode, Error> {
+    for path in options.json.iter().chain(&options.write_hits) {
+        atomic_file::can_write(path)?;
+    }
+    let finished = run_bench(&BenchOptions {
+        mesh: options.mesh.clone(),
+        rays: options.rays.clone(),
+        size: options.size,
+        incoherent: options.incoherent,
+        seed: options.seed,
+        threads: options.threads,
+        rounds: options.rounds,
+        builders: options.builders.iter().map(|b| b.split()).collect(),
+        precisions: options.precisions.iter().map(|p| p.precision()).collect(),
+        peers: options.peers,
+        brute_force: options.brute_force,
+        progress: std::io::stderr().is_terminal(),
+    })
+    .map_err(|e| Error::Usage(e.to_string()))?;
+    print!("{}", finished.report.table());
+    if let Some(path) = &options.json {
+        let mut text = serde_json::to_string_pretty(&finished.report)
+            .map_err(|e| Error::Usage(format!("{}: {e}", path.display())))?;
+        text.push('\n');
+        atomic_file::write(path, text.as_bytes())?;
+    }
+    if let Some(path) = &options.write_hits {
+        atomic_file::write(path, &hit_bytes(&finished.answers))?;
+    }
+    Ok(ExitCode::SUCCESS)
+}
