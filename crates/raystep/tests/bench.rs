@@ -1,0 +1,188 @@
+//! `raystep bench` from the outside: a tiny run writes its JSON report and
+//! its hit file; bad input gives one clear line naming the file or the
+//! argument, a failing exit status, and no output file at all.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn raystep(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_raystep"))
+        .args(args)
+        .output()
+        .expect("raystep runs")
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("raystep-bench")
+        .join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// A unit square in the plane z = 0, as two triangles: 0 below the
+/// diagonal x = y, 1 above it.
+const SQUARE: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+
+/// A ray file: per ray six little-endian f32.
+fn ray_file(rays: &[[f32; 6]]) -> Vec<u8> {
+    rays.iter()
+        .flatten()
+        .flat_map(|x| x.to_le_bytes())
+        .collect()
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+#[test]
+fn a_ray_file_run_writes_the_report_and_every_hit() {
+    let dir = scratch("good");
+    let (obj, rays) = (dir.join("square.obj"), dir.join("rays.bin"));
+    let (json, hits) = (dir.join("report.json"), dir.join("hits.bin"));
+    fs::write(&obj, SQUARE).unwrap();
+    // Down the z axis from z = 2: onto triangle 0, onto triangle 1, and
+    // beside the square.
+    fs::write(
+        &rays,
+        ray_file(&[
+            [0.75, 0.25, 2.0, 0.0, 0.0, -1.0],
+            [0.25, 0.75, 2.0, 0.0, 0.0, -1.0],
+            [3.0, 3.0, 2.0, 0.0, 0.0, -1.0],
+        ]),
+    )
+    .unwrap();
+    let run = raystep(&[
+        "bench",
+        obj.to_str().unwrap(),
+        "--rays",
+        rays.to_str().unwrap(),
+        "--rounds",
+        "1",
+        "--builders",
+        "median,sah4",
+        "--json",
+        json.to_str().unwrap(),
+        "--write-hits",
+        hits.to_str().unwrap(),
+    ]);
+    assert!(run.status.success(), "{}", text(&run.stderr));
+    // The table names every method and counts no disagreement.
+    let table = text(&run.stdout);
+    for method in ["median, f32", "median, f64", "SAH, 4 bins, f32"] {
+        assert!(table.contains(method), "{method} missing:\n{table}");
+    }
+    assert!(table.contains("3 (Closest hit)"), "{table}");
+    assert!(table.contains("0 disagreements"), "{table}");
+    // The JSON report: the mesh, the set, four methods.
+    let report: serde_json::Value =
+        serde_json::from_str(&fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(report["triangles"], 2);
+    assert_eq!(report["sets"][0]["rays"], 3);
+    assert_eq!(report["sets"][0]["brute_force_disagreements"], 0);
+    assert_eq!(report["methods"].as_array().unwrap().len(), 4);
+    // The hit file: 8 bytes a ray, t then the triangle; a miss is
+    // (+inf, u32::MAX).
+    let bytes = fs::read(&hits).unwrap();
+    assert_eq!(bytes.len(), 3 * 8);
+    let record = |k: usize| {
+        let r = &bytes[8 * k..8 * k + 8];
+        (
+            f32::from_le_bytes(r[..4].try_into().unwrap()),
+            u32::from_le_bytes(r[4..].try_into().unwrap()),
+        )
+    };
+    assert_eq!(record(0), (2.0, 0));
+    assert_eq!(record(1), (2.0, 1));
+    assert_eq!(record(2), (f32::INFINITY, u32::MAX));
+}
+
+#[test]
+fn generated_ray_sets_are_reported_by_name() {
+    let dir = scratch("generated");
+    let obj = dir.join("square.obj");
+    fs::write(&obj, SQUARE).unwrap();
+    let run = raystep(&[
+        "bench",
+        obj.to_str().unwrap(),
+        "--size",
+        "8",
+        "--incoherent",
+        "100",
+        "--rounds",
+        "1",
+        "--precision",
+        "f32",
+    ]);
+    assert!(run.status.success(), "{}", text(&run.stderr));
+    let table = text(&run.stdout);
+    for set in ["primary rays: 64", "shadow rays:", "incoherent rays: 100"] {
+        assert!(table.contains(set), "{set} missing:\n{table}");
+    }
+}
+
+/// Bad input: the exit status is not 0, stderr is one line naming
+/// `names`, and neither output file exists.
+fn refused(dir: &Path, args: &[&str], names: &str) {
+    let (json, hits) = (dir.join("report.json"), dir.join("hits.bin"));
+    let mut all = vec!["bench"];
+    all.extend_from_slice(args);
+    all.extend([
+        "--rounds",
+        "1",
+        "--json",
+        json.to_str().unwrap(),
+        "--write-hits",
+        hits.to_str().unwrap(),
+    ]);
+    let run = raystep(&all);
+    let stderr = text(&run.stderr);
+    assert!(!run.status.success(), "{args:?} was accepted");
+    assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+    assert!(stderr.contains(names), "{names} not named in: {stderr}");
+    assert!(!json.exists() && !hits.exists(), "{args:?} left a file");
+    let leftovers: Vec<_> = fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .filter(|name| name != "square.obj" && name != "bad.obj")
+        .filter(|name| name != "rays.bin")
+        .collect();
+    assert!(leftovers.is_empty(), "{args:?} left {leftovers:?}");
+}
+
+#[test]
+fn bad_input_is_refused_by_name_and_writes_nothing() {
+    let dir = scratch("bad");
+    let obj = dir.join("square.obj");
+    fs::write(&obj, SQUARE).unwrap();
+    let obj = obj.to_str().unwrap();
+    // A mesh that is not there, and one that does not parse.
+    let missing = dir.join("missing.obj");
+    refused(&dir, &[missing.to_str().unwrap()], "missing.obj");
+    let bad = dir.join("bad.obj");
+    fs::write(&bad, "v 0 0 0\nv 1 0 0\nv 1 1 zero\nf 1 2 3\n").unwrap();
+    refused(&dir, &[bad.to_str().unwrap()], "bad.obj");
+    // A ray file of 25 bytes: not a whole number of 24-byte rays.
+    let rays = dir.join("rays.bin");
+    fs::write(&rays, [0u8; 25]).unwrap();
+    refused(&dir, &[obj, "--rays", rays.to_str().unwrap()], "rays.bin");
+    // Threads: none, not a number.
+    refused(&dir, &[obj, "--threads", "0"], "--threads");
+    refused(&dir, &[obj, "--threads", "abc"], "--threads");
+    // An output folder that does not exist: refused before any work.
+    let nowhere = dir.join("no/such/folder/report.json");
+    let run = raystep(&[
+        "bench",
+        obj,
+        "--json",
+        nowhere.to_str().unwrap(),
+        "--size",
+        "4",
+    ]);
+    assert!(!run.status.success());
+    assert!(text(&run.stderr).contains("report.json"));
+    assert!(!text(&run.stdout).contains("method"), "it ran first");
+}
