@@ -192,6 +192,39 @@ impl Mesh {
     }
 }
 
+/// What the OBJ reader's error means for `path`: the system's reason if
+/// the file cannot be read, else the first line that does not parse (the
+/// reader itself names no line).
+fn explain(path: &Path, error: &tobj::LoadError) -> String {
+    let text = match std::fs::read_to_string(path) {
+        Ok(text) => text,
+        Err(e) => return e.to_string(),
+    };
+    let mut vertices = 0usize;
+    for (number, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        let bad = match words.next() {
+            Some("v") => {
+                vertices += 1;
+                words.take(3).filter(|w| w.parse::<f32>().is_ok()).count() < 3
+            }
+            Some("vt" | "vn") => words.any(|w| w.parse::<f32>().is_err()),
+            Some("f") => words.any(|w| {
+                let index = w.split('/').next().unwrap_or("");
+                match index.parse::<i64>() {
+                    Ok(i) => i == 0 || i.unsigned_abs() as usize > vertices,
+                    Err(_) => true,
+                }
+            }),
+            _ => false,
+        };
+        if bad {
+            return format!("line {}: {error}: {}", number + 1, line.trim());
+        }
+    }
+    error.to_string()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -237,37 +270,4 @@ mod tests {
             "{error}"
         );
     }
-}
-
-/// What the OBJ reader's error means for `path`: the system's reason if
-/// the file cannot be read, else the first line that does not parse (the
-/// reader itself names no line).
-fn explain(path: &Path, error: &tobj::LoadError) -> String {
-    let text = match std::fs::read_to_string(path) {
-        Ok(text) => text,
-        Err(e) => return e.to_string(),
-    };
-    let mut vertices = 0usize;
-    for (number, line) in text.lines().enumerate() {
-        let mut words = line.split_whitespace();
-        let bad = match words.next() {
-            Some("v") => {
-                vertices += 1;
-                words.take(3).filter(|w| w.parse::<f32>().is_ok()).count() < 3
-            }
-            Some("vt" | "vn") => words.any(|w| w.parse::<f32>().is_err()),
-            Some("f") => words.any(|w| {
-                let index = w.split('/').next().unwrap_or("");
-                match index.parse::<i64>() {
-                    Ok(i) => i == 0 || i.unsigned_abs() as usize > vertices,
-                    Err(_) => true,
-                }
-            }),
-            _ => false,
-        };
-        if bad {
-            return format!("line {}: {error}: {}", number + 1, line.trim());
-        }
-    }
-    error.to_string()
 }
