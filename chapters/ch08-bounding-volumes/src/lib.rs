@@ -102,10 +102,15 @@ mod bvh_traverse;
 mod mesh_bvh;
 mod mesh_trace;
 
+// Exercise 6: the near-first walk for the closest hit.
+#[cfg_attr(feature = "exercise", path = "../exercise/near_first.rs")]
+mod near_first;
+
 pub use bvh::{Bvh, BvhNode, INTERSECTION, Split, TRAVERSAL};
 pub use bvh_build::MAX_LEAF;
 pub use mesh_bvh::{MeshBvh, NodePrecision, Ray32, triangle_boxes};
 pub use mesh_trace::{MeshHit, PreparedRay, TraceCounts};
+pub use near_first::near_first_closest_hit;
 pub use raystep_world::{Accelerator, Object, World};
 
 // ---------------------------------------------------------------------
