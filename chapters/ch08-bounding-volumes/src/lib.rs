@@ -99,6 +99,7 @@ pub use tightness::{
 mod bvh;
 mod bvh_build;
 mod bvh_traverse;
+mod edge_rays;
 mod mesh_bvh;
 mod mesh_trace;
 
@@ -108,6 +109,7 @@ mod near_first;
 
 pub use bvh::{Bvh, BvhNode, INTERSECTION, Split, TRAVERSAL};
 pub use bvh_build::MAX_LEAF;
+pub use edge_rays::{EDGE_REACH, leak_surfaces, leaks, shared_edge_rays};
 pub use mesh_bvh::{MeshBvh, NodePrecision, Ray32, triangle_boxes};
 pub use mesh_trace::{MeshHit, PreparedRay, TraceCounts};
 pub use near_first::near_first_closest_hit;

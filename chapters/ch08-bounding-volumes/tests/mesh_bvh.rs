@@ -4,12 +4,12 @@
 //! rays, rays aimed at every shared edge, and rays that are not rays.
 //! Disagreements and leaks are counted; for the two robust layouts they
 //! must be 0.
-use std::collections::HashMap;
 use std::path::Path;
 
 use ch08::{
-    Bvh, DVec3, Interval, MeshBvh, MeshHit, NodePrecision, Ray32, Split,
-    TraceCounts, camera_rays, incoherent_rays, triangle_boxes, watertight,
+    Bvh, DVec3, EDGE_REACH, Interval, MeshBvh, MeshHit, NodePrecision, Ray32,
+    Split, TraceCounts, camera_rays, incoherent_rays, leak_surfaces,
+    shared_edge_rays, triangle_boxes, watertight,
 };
 use raystep_core::glam::Vec3;
 use raystep_scene::Mesh;
@@ -116,95 +116,32 @@ fn every_layout_agrees_with_brute_force_on_the_bunny() {
     insta::assert_snapshot!(table);
 }
 
-/// Every edge two triangles share, aimed at from the camera through
-/// points along it (its midpoint and quarter points): the watertight test
-/// and a robust walk let none through. A *leak* is a ray aimed at a point
-/// on the surface that hits nothing at or before it.
+/// Rays aimed at the points along every shared edge
+/// ([`shared_edge_rays`]): how many, and how many leak through each layout
+/// (f64, f32, f32 to nearest) and through brute force. A *leak* is a ray
+/// aimed at a point on the surface that hits nothing at or before it.
 fn leaks(triangles: &[[DVec3; 3]], points: &[f64]) -> (usize, [usize; 4]) {
-    let mut edges: HashMap<[[u64; 3]; 2], Vec<usize>> = HashMap::new();
-    let key = |p: DVec3| p.to_array().map(f64::to_bits);
-    for (k, v) in triangles.iter().enumerate() {
-        for i in 0..3 {
-            let (a, b) = (key(v[i]), key(v[(i + 1) % 3]));
-            let edge = if a < b { [a, b] } else { [b, a] };
-            edges.entry(edge).or_default().push(k);
-        }
-    }
-    let normal = |v: &[DVec3; 3]| (v[1] - v[0]).cross(v[2] - v[0]).normalize();
-    let from = |k: [u64; 3]| DVec3::from_array(k.map(f64::from_bits));
-    let bounds =
-        raystep_core::Aabb::around(triangles.iter().flatten().copied());
-    let (centre, size) =
-        (0.5 * (bounds.min + bounds.max), bounds.max - bounds.min);
-    let eye = (centre + DVec3::new(0.3, 0.2, 3.0) * size.length()).as_vec3();
-    let mut aimed = 0;
-    let mut leaks = [0usize; 4];
+    let rays = shared_edge_rays(triangles, points);
     let trees = trees(triangles);
-    for (&[a, b], sharing) in &edges {
-        let &[i, j] = sharing.as_slice() else {
-            continue; // a border edge, or more than two triangles
-        };
-        for &s in points {
-            let target = from(a).lerp(from(b), s);
-            let ray = Ray32 {
-                origin: eye,
-                direction: (target - eye.as_dvec3()).as_vec3(),
-            };
-            // Not at a silhouette: the ray sees both triangles from the
-            // same side, and neither edge-on.
-            let d = ray.direction.as_dvec3().normalize();
-            let (ci, cj) =
-                (normal(&triangles[i]).dot(d), normal(&triangles[j]).dot(d));
-            if ci * cj <= 0.0 || ci.abs() < 0.05 || cj.abs() < 0.05 {
-                continue;
-            }
-            // The target is (to rounding) on the surface at t = 1; allow
-            // for the rounding of the ray to f32.
-            let reach = Interval::new(0.0, 1.0 + 1e-4);
-            aimed += 1;
-            for (k, (_, bvh)) in trees.iter().enumerate() {
-                let mut counts = TraceCounts::default();
-                if bvh.closest_hit(&ray, reach, &mut counts).is_none() {
-                    leaks[k] += 1;
-                }
-            }
-            if trees[0].1.brute_force(&ray, reach).is_none() {
-                leaks[3] += 1;
-            }
-        }
-    }
-    (aimed, leaks)
+    let through = |k: usize| ch08::leaks(&trees[k].1, &rays);
+    let brute = rays
+        .iter()
+        .filter(|ray| trees[0].1.brute_force(ray, EDGE_REACH).is_none())
+        .count();
+    (rays.len(), [through(0), through(1), through(2), brute])
 }
 
 #[test]
 fn no_ray_leaks_through_a_shared_edge() {
     let bunny = bunny();
-    // The bunny as read (its corners are f32 numbers), and moved 1000
-    // away and shrunk by 3 (corners no f32 can hold: nodes rounded).
-    let moved: Vec<_> = bunny
-        .iter()
-        .map(|v| v.map(|p| p / 3.0 + DVec3::new(1000.0, -700.0, 300.0)))
-        .collect();
-    // A floor of square tiles 0.1 wide (no f32 holds 0.1): its edges lie
-    // on the faces of the leaves' boxes.
-    let mut floor = Vec::new();
-    for i in 0..24 {
-        for j in 0..24 {
-            let corner = |a: i32, b: i32| {
-                DVec3::new(0.1 * f64::from(a), 0.3, 0.1 * f64::from(b))
-            };
-            let [p, q, r, s] = [(i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)]
-                .map(|(a, b)| corner(a, b));
-            floor.extend([[p, s, q], [q, s, r]]);
-        }
-    }
+    // The bunny as read (its corners are f32 numbers), moved 1000 away
+    // and shrunk by 3 (corners no f32 can hold: nodes rounded), and a
+    // floor of tiles 0.1 wide (no f32 holds 0.1): its edges lie on the
+    // faces of the leaves' boxes.
     let mut table = String::new();
-    for (name, triangles, points) in [
-        ("bunny", &bunny, &[0.5][..]),
-        ("bunny moved", &moved, &[0.5][..]),
-        ("tiled floor", &floor, &[0.1, 0.3, 0.5, 0.7, 0.9][..]),
-    ] {
-        let (aimed, leaks) = leaks(triangles, points);
+    for (name, triangles, points) in leak_surfaces(&bunny) {
+        let name = name.replace("mesh", "bunny");
+        let (aimed, leaks) = leaks(&triangles, points);
         assert!(aimed > 4_000, "{name}: {aimed}");
         assert_eq!(
             leaks[..2],
