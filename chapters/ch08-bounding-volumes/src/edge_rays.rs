@@ -80,14 +80,21 @@ pub fn leaks(bvh: &MeshBvh, rays: &[Ray32]) -> usize {
         .count()
 }
 
+/// A surface the leak counts aim at.
+pub struct LeakSurface {
+    /// `mesh`, `mesh moved`, `tiled floor`.
+    pub name: &'static str,
+    /// Its triangles.
+    pub triangles: Vec<[DVec3; 3]>,
+    /// The fractions along each shared edge aimed at.
+    pub points: &'static [f64],
+}
+
 /// The surfaces the leak counts use: the mesh as given, the same mesh
 /// moved 1000 away and shrunk by 3 (corners no `f32` can hold, so node
 /// boxes are rounded), and a floor of 24 × 24 square tiles 0.1 wide (no
-/// `f32` holds 0.1; its edges lie on the faces of the leaves' boxes). Each
-/// with its name and the points along each edge aimed at.
-pub fn leak_surfaces(
-    mesh: &[[DVec3; 3]],
-) -> Vec<(&'static str, Vec<[DVec3; 3]>, &'static [f64])> {
+/// `f32` holds 0.1; its edges lie on the faces of the leaves' boxes).
+pub fn leak_surfaces(mesh: &[[DVec3; 3]]) -> Vec<LeakSurface> {
     let moved: Vec<_> = mesh
         .iter()
         .map(|v| v.map(|p| p / 3.0 + DVec3::new(1000.0, -700.0, 300.0)))
@@ -103,9 +110,14 @@ pub fn leak_surfaces(
             floor.extend([[p, s, q], [q, s, r]]);
         }
     }
+    let surface = |name, triangles, points| LeakSurface {
+        name,
+        triangles,
+        points,
+    };
     vec![
-        ("mesh", mesh.to_vec(), &[0.5]),
-        ("mesh moved", moved, &[0.5]),
-        ("tiled floor", floor, &[0.1, 0.3, 0.5, 0.7, 0.9]),
+        surface("mesh", mesh.to_vec(), &[0.5]),
+        surface("mesh moved", moved, &[0.5]),
+        surface("tiled floor", floor, &[0.1, 0.3, 0.5, 0.7, 0.9]),
     ]
 }

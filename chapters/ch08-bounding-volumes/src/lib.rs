@@ -109,7 +109,9 @@ mod near_first;
 
 pub use bvh::{Bvh, BvhNode, INTERSECTION, Split, TRAVERSAL};
 pub use bvh_build::MAX_LEAF;
-pub use edge_rays::{EDGE_REACH, leak_surfaces, leaks, shared_edge_rays};
+pub use edge_rays::{
+    EDGE_REACH, LeakSurface, leak_surfaces, leaks, shared_edge_rays,
+};
 pub use mesh_bvh::{MeshBvh, NodePrecision, Ray32, triangle_boxes};
 pub use mesh_trace::{MeshHit, PreparedRay, TraceCounts};
 pub use near_first::near_first_closest_hit;

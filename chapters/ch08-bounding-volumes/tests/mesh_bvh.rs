@@ -139,9 +139,9 @@ fn no_ray_leaks_through_a_shared_edge() {
     // floor of tiles 0.1 wide (no f32 holds 0.1): its edges lie on the
     // faces of the leaves' boxes.
     let mut table = String::new();
-    for (name, triangles, points) in leak_surfaces(&bunny) {
-        let name = name.replace("mesh", "bunny");
-        let (aimed, leaks) = leaks(&triangles, points);
+    for surface in leak_surfaces(&bunny) {
+        let name = surface.name.replace("mesh", "bunny");
+        let (aimed, leaks) = leaks(&surface.triangles, surface.points);
         assert!(aimed > 4_000, "{name}: {aimed}");
         assert_eq!(
             leaks[..2],
