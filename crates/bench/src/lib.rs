@@ -90,6 +90,48 @@ pub fn hit_bytes(answers: &[Answer]) -> Vec<u8> {
     bytes
 }
 
+/// Runs `work` on a pool of `threads` threads (the tracing inside runs
+/// on it): measurements that must be single-threaded use 1.
+pub fn on_threads<T: Send>(
+    threads: usize,
+    work: impl FnOnce() -> T + Send,
+) -> Result<T, BenchError> {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.max(1))
+        .build()
+        .map_err(|e| BenchError::Argument {
+            argument: "--threads",
+            message: e.to_string(),
+        })?;
+    Ok(pool.install(work))
+}
+
+/// Runs `work` on a pool of `threads` threads, as [`on_threads`], while
+/// this thread calls `step` each time `work` calls the tick it is given:
+/// a measurement's progress bar, which need not be sendable.
+pub fn on_threads_with_steps<T: Send>(
+    threads: usize,
+    work: impl FnOnce(&mut dyn FnMut()) -> T + Send,
+    step: &mut dyn FnMut(),
+) -> Result<T, BenchError> {
+    let (ticks, ticked) = std::sync::mpsc::channel::<()>();
+    std::thread::scope(|scope| {
+        let worker = scope.spawn(move || {
+            on_threads(threads, move || {
+                work(&mut || {
+                    let _ = ticks.send(());
+                })
+            })
+        });
+        for () in ticked {
+            step();
+        }
+        worker
+            .join()
+            .unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+    })
+}
+
 /// Runs the benchmark. It writes no file: the caller writes the report
 /// and the answers, once everything has worked.
 pub fn run(options: &BenchOptions) -> Result<BenchRun, BenchError> {
@@ -176,6 +218,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchRun, BenchError> {
             &methods,
             options.rounds.max(1),
             &progress,
+            &mut || {},
         );
         let reference = first.build(&triangles);
         let checks = run::check_brute_force(

@@ -91,13 +91,15 @@ pub fn median(values: &mut [f64]) -> f64 {
 /// Runs the comparison: `rounds` rounds, in each every method built and
 /// traced on every set in turn. The first method's answers are the
 /// reference the others are checked against; the answers of the first
-/// method on the first set are returned for the hit file.
+/// method on the first set are returned for the hit file. `step` is called
+/// after each round.
 pub fn compare(
     triangles: &[[DVec3; 3]],
     sets: &[RaySet],
     methods: &[Method],
     rounds: usize,
     progress: &ProgressBar,
+    step: &mut dyn FnMut(),
 ) -> (Vec<MethodReport>, Vec<Answer>) {
     let mut reports: Vec<MethodReport> =
         methods.iter().map(|m| MethodReport::new(m, sets)).collect();
@@ -138,6 +140,7 @@ pub fn compare(
                 }
             }
         }
+        step();
     }
     for (m, report) in reports.iter_mut().enumerate() {
         report.build_ms = median(&mut build_ms[m]);

@@ -1,6 +1,9 @@
 //! Chapter 8 — bounding volumes: the lecture's figures, charts and
 //! measurements, drawn from the chapter's public API, and the chapter's
 //! entry in the command line ([`CHAPTER`]).
+mod bvh_charts;
+pub mod bvh_measurements;
+mod bvh_rows;
 mod charts;
 mod diagrams;
 pub mod measurements;
@@ -26,7 +29,15 @@ pub const CHAPTER: Chapter = Chapter {
         "near_first",
     ],
     figures: diagrams::all,
-    charts: &[charts::costs_chart, charts::bounding_chart],
+    charts: &[
+        charts::costs_chart,
+        charts::bounding_chart,
+        bvh_charts::builders_chart,
+        bvh_charts::sah_chart,
+        bvh_charts::scaling_chart,
+        bvh_charts::precision_chart,
+        bvh_charts::zbuffer_chart,
+    ],
     measurements: &[
         Measurement {
             what: "ch08 costs",
@@ -42,6 +53,38 @@ pub const CHAPTER: Chapter = Chapter {
             steps: measurements::bounding_steps,
             run: |repeats, step| {
                 Ok(to_csv(&measurements::measure_bounding(repeats, step)?))
+            },
+        },
+        Measurement {
+            what: "ch08 BVH builders",
+            file: "bvh-builders.csv",
+            steps: bvh_measurements::builder_steps,
+            run: |repeats, step| {
+                Ok(to_csv(&bvh_measurements::measure_builders(repeats, step)?))
+            },
+        },
+        Measurement {
+            what: "ch08 BVH scaling",
+            file: "bvh-scaling.csv",
+            steps: bvh_measurements::scaling_steps,
+            run: |repeats, step| {
+                Ok(to_csv(&bvh_measurements::measure_scaling(repeats, step)?))
+            },
+        },
+        Measurement {
+            what: "ch08 BVH node precision",
+            file: "bvh-precision.csv",
+            steps: bvh_measurements::precision_steps,
+            run: |repeats, step| {
+                Ok(to_csv(&bvh_measurements::measure_precision(repeats, step)?))
+            },
+        },
+        Measurement {
+            what: "ch08 BVH against the z-buffer",
+            file: "bvh-zbuffer.csv",
+            steps: bvh_measurements::zbuffer_steps,
+            run: |repeats, step| {
+                Ok(to_csv(&bvh_measurements::measure_zbuffer(repeats, step)?))
             },
         },
     ],
