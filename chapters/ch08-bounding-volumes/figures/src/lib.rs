@@ -18,7 +18,13 @@ pub const CHAPTER: Chapter = Chapter {
     id: "ch08",
     title: "Bounding volumes",
     package: "ch08-bounding-volumes",
-    exercises: &["slab", "watertight", "torus_quartic", "sphere_of_points"],
+    exercises: &[
+        "slab",
+        "watertight",
+        "torus_quartic",
+        "sphere_of_points",
+        "sah_split",
+    ],
     figures: diagrams::all,
     charts: &[charts::costs_chart, charts::bounding_chart],
     measurements: &[
