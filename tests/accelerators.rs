@@ -189,20 +189,22 @@ fn every_tracer_gives_the_same_bytes_on_a_second_collection() {
 
 /// Chapter 8's hierarchy behind the same seam: on every chapter scene,
 /// every tracer gives the same image bytes and the same counts with the
-/// BVH of each split rule as with the plain list.
+/// BVH of each builder as with the plain list.
 #[test]
 fn every_tracer_gives_the_same_bytes_on_a_bvh() {
-    let splits = [
-        ch08::Split::Midpoint,
-        ch08::Split::Median,
-        ch08::Split::BinnedSah { bins: 8 },
+    let builders = [
+        ch08::Builder::Midpoint,
+        ch08::Builder::Median,
+        ch08::Builder::BinnedSah { bins: 8 },
+        ch08::Builder::SweepSah,
+        ch08::Builder::Ploc { radius: 8 },
     ];
     let mut compared = 0;
     for path in &chapter_scenes() {
         let (list, _, _) = worlds(path);
         let expected = every_tracer(&list);
-        for split in splits {
-            let bvh = Arc::new(ch08::Bvh::for_objects(&list.objects, split));
+        for builder in builders {
+            let bvh = Arc::new(ch08::Bvh::for_objects(&list.objects, builder));
             let actual = every_tracer(&list.clone().with_accelerator(bvh));
             for ((name, a, a_counts), (_, b, b_counts)) in
                 expected.iter().zip(&actual)
@@ -211,7 +213,7 @@ fn every_tracer_gives_the_same_bytes_on_a_bvh() {
                     a.to_srgb8(),
                     b.to_srgb8(),
                     "{name} with a {} BVH on {}: the images differ",
-                    split.name(),
+                    builder.name(),
                     path.display()
                 );
                 assert_eq!(a_counts, b_counts, "{name} on {}", path.display());
@@ -219,7 +221,7 @@ fn every_tracer_gives_the_same_bytes_on_a_bvh() {
             }
         }
     }
-    assert!(compared >= 4 * 3 * 8);
+    assert!(compared >= 4 * 5 * 8);
 }
 
 /// Each ray a tracer counts is one question to the collection: a primary

@@ -1,9 +1,11 @@
 //! A bounding volume hierarchy: boxes inside boxes, stored as one flat
-//! array of nodes, built top-down by one of the [`Split`] rules.
+//! array of nodes, built by one of the [`Builder`]s.
 use raystep_core::{Aabb, Interval, Ray};
 use raystep_world::Object;
 
+use crate::bvh_agglomerative::agglomerative;
 use crate::bvh_build::build;
+use crate::bvh_ploc::ploc;
 
 /// One node of a [`Bvh`]: a box, and either two children (`count == 0`:
 /// the children are nodes `first` and `first + 1`) or a leaf (`count > 0`:
@@ -25,28 +27,66 @@ impl BvhNode {
     }
 }
 
-/// How a node's objects are split in two.
+/// How a [`Bvh`] is built. Every builder gives the same node layout, so
+/// the walk, [`MeshBvh`](crate::MeshBvh) and the measurements are shared.
+///
+/// The first four split top-down, the last two merge bottom-up.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Split {
-    /// At the middle of the centroids' box, along its longest axis.
+pub enum Builder {
+    /// Split at the middle of the centroids' box, along its longest axis.
     Midpoint,
-    /// At the median centroid along that axis: two halves of equal count.
+    /// Split at the median centroid along that axis: two halves of equal
+    /// count.
     Median,
-    /// Where the surface area heuristic is lowest, among `bins` equal
-    /// slices of the centroids' box on each axis.
+    /// Split where the surface area heuristic is lowest, among `bins`
+    /// equal slices of the centroids' box on each axis.
     BinnedSah {
         /// How many slices per axis (at least 2).
         bins: usize,
     },
+    /// Split where the surface area heuristic is lowest among every cut
+    /// between two neighbouring centroids on each axis (Wald 2007's full
+    /// sweep).
+    SweepSah,
+    /// Merge, again and again, the two clusters whose union has the
+    /// smallest area (Walter et al. 2008, exact). Quadratic: above
+    /// [`AGGLOMERATIVE_LIMIT`] objects it is PLOC with radius 8.
+    Agglomerative,
+    /// PLOC (Meister and Bittner 2018): clusters sorted along a Morton
+    /// curve; each pair of mutual nearest neighbours within `radius`
+    /// places of each other merges, round after round.
+    Ploc {
+        /// How far along the curve a cluster looks (at least 1).
+        radius: usize,
+    },
 }
 
-impl Split {
-    /// `midpoint`, `median`, `SAH, 16 bins`: the name tables show.
+/// The most objects [`Builder::Agglomerative`] clusters exactly.
+pub const AGGLOMERATIVE_LIMIT: usize = 4096;
+
+impl Builder {
+    /// Every builder, in the order tables show them.
+    pub const ALL: [Builder; 9] = [
+        Builder::Midpoint,
+        Builder::Median,
+        Builder::BinnedSah { bins: 4 },
+        Builder::BinnedSah { bins: 8 },
+        Builder::BinnedSah { bins: 16 },
+        Builder::BinnedSah { bins: 32 },
+        Builder::SweepSah,
+        Builder::Agglomerative,
+        Builder::Ploc { radius: 8 },
+    ];
+
+    /// `midpoint`, `SAH, 16 bins`, `PLOC, radius 8`: the name tables show.
     pub fn name(self) -> String {
         match self {
-            Split::Midpoint => "midpoint".to_string(),
-            Split::Median => "median".to_string(),
-            Split::BinnedSah { bins } => format!("SAH, {bins} bins"),
+            Builder::Midpoint => "midpoint".to_string(),
+            Builder::Median => "median".to_string(),
+            Builder::BinnedSah { bins } => format!("SAH, {bins} bins"),
+            Builder::SweepSah => "SAH, full sweep".to_string(),
+            Builder::Agglomerative => "agglomerative".to_string(),
+            Builder::Ploc { radius } => format!("PLOC, radius {radius}"),
         }
     }
 }
@@ -75,20 +115,24 @@ pub struct Bvh {
 
 impl Bvh {
     /// The hierarchy over `boxes` (object `i` has box `boxes[i]`), split by
-    /// `split`. An object without a finite box (a plane) is kept out of the
-    /// tree, in [`Bvh::unbounded`]: it would make every box around it
+    /// `builder`. An object without a finite box (a plane) is kept out of
+    /// the tree, in [`Bvh::unbounded`]: it would make every box around it
     /// infinite.
-    pub fn build(boxes: &[Aabb], split: Split) -> Bvh {
-        build(boxes, split)
+    pub fn build(boxes: &[Aabb], builder: Builder) -> Bvh {
+        match builder {
+            Builder::Agglomerative => agglomerative(boxes),
+            Builder::Ploc { radius } => ploc(boxes, radius),
+            top_down => build(boxes, top_down),
+        }
     }
 
     /// The hierarchy over the objects' boxes ([`Shape::bounds`]).
     ///
     /// [`Shape::bounds`]: raystep_core::Shape::bounds
-    pub fn for_objects(objects: &[Object], split: Split) -> Bvh {
+    pub fn for_objects(objects: &[Object], builder: Builder) -> Bvh {
         let boxes: Vec<Aabb> =
             objects.iter().map(|o| o.shape.bounds()).collect();
-        Bvh::build(&boxes, split)
+        Bvh::build(&boxes, builder)
     }
 
     /// The SAH cost of the whole tree: for each node, its chance of being
@@ -118,20 +162,70 @@ impl Bvh {
 
     /// The number of nodes from the root to the deepest leaf (0 if empty).
     pub fn depth(&self) -> usize {
-        fn below(nodes: &[BvhNode], k: usize) -> usize {
-            let node = nodes[k];
-            if node.is_leaf() {
-                1
-            } else {
+        self.leaf_depths()
+            .map(|(_, depth)| depth)
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// Each leaf with its depth (the root's is 1), walked with a stack:
+    /// a bottom-up tree may be deep.
+    pub(crate) fn leaf_depths(&self) -> impl Iterator<Item = (BvhNode, usize)> {
+        let mut stack = Vec::new();
+        if !self.nodes.is_empty() {
+            stack.push((0usize, 1usize));
+        }
+        std::iter::from_fn(move || {
+            while let Some((k, depth)) = stack.pop() {
+                let node = self.nodes[k];
+                if node.is_leaf() {
+                    return Some((node, depth));
+                }
                 let first = node.first as usize;
-                1 + below(nodes, first).max(below(nodes, first + 1))
+                stack.push((first + 1, depth + 1));
+                stack.push((first, depth + 1));
             }
-        }
-        if self.nodes.is_empty() {
-            0
+            None
+        })
+    }
+}
+
+/// Sorts `boxes` into those the tree holds and those it cannot: an object
+/// with no finite box (a plane), or an empty one (which a wrong shape
+/// might still hit), is asked by every ray. The builders' step 1.
+pub(crate) fn bounded_objects(boxes: &[Aabb]) -> (Vec<u32>, Vec<u32>) {
+    let (mut order, mut unbounded) = (Vec::new(), Vec::new());
+    for (i, b) in boxes.iter().enumerate() {
+        let finite = b.min.is_finite() && b.max.is_finite();
+        if finite && !b.is_empty() {
+            order.push(i as u32);
         } else {
-            below(&self.nodes, 0)
+            unbounded.push(i as u32);
         }
+    }
+    (order, unbounded)
+}
+
+/// The builders' copy of exercise 5's [`split_cost`](crate::split_cost):
+/// the builders call this one, so that they still work while the
+/// exercise is a stub (`src/sah_split.rs` has the same body, and a test
+/// that the two agree).
+pub(crate) fn split_cost_reference(
+    parent: &Aabb,
+    left: &Aabb,
+    n_left: usize,
+    right: &Aabb,
+    n_right: usize,
+) -> f64 {
+    let (n_left, n_right) = (n_left as f64, n_right as f64);
+    let area = parent.surface_area();
+    if area > 0.0 {
+        TRAVERSAL
+            + (left.surface_area() * n_left + right.surface_area() * n_right)
+                / area
+                * INTERSECTION
+    } else {
+        TRAVERSAL + (n_left + n_right) * INTERSECTION
     }
 }
 

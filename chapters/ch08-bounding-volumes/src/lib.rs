@@ -97,18 +97,29 @@ pub use tightness::{
 // ---------------------------------------------------------------------
 
 mod bvh;
+mod bvh_agglomerative;
 mod bvh_build;
+mod bvh_flatten;
+mod bvh_ploc;
+mod bvh_stats;
+mod bvh_sweep;
 mod bvh_traverse;
 mod edge_rays;
 mod mesh_bvh;
 mod mesh_trace;
 
+// Exercise 5: the SAH cost of one split.
+#[cfg_attr(feature = "exercise", path = "../exercise/sah_split.rs")]
+mod sah_split;
 // Exercise 6: the near-first walk for the closest hit.
 #[cfg_attr(feature = "exercise", path = "../exercise/near_first.rs")]
 mod near_first;
 
-pub use bvh::{Bvh, BvhNode, INTERSECTION, Split, TRAVERSAL};
+pub use bvh::{
+    AGGLOMERATIVE_LIMIT, Builder, Bvh, BvhNode, INTERSECTION, TRAVERSAL,
+};
 pub use bvh_build::MAX_LEAF;
+pub use bvh_stats::TreeStats;
 pub use edge_rays::{
     EDGE_REACH, LeakSurface, leak_surfaces, leaks, shared_edge_rays,
 };
@@ -116,6 +127,7 @@ pub use mesh_bvh::{MeshBvh, NodePrecision, Ray32, triangle_boxes};
 pub use mesh_trace::{MeshHit, PreparedRay, TraceCounts};
 pub use near_first::near_first_closest_hit;
 pub use raystep_world::{Accelerator, Object, World};
+pub use sah_split::split_cost;
 
 // ---------------------------------------------------------------------
 // Scene files: every primitive from TOML.

@@ -7,8 +7,8 @@
 use std::path::Path;
 
 use ch08::{
-    Bvh, DVec3, EDGE_REACH, Interval, MeshBvh, MeshHit, NodePrecision, Ray32,
-    Split, TraceCounts, camera_rays, incoherent_rays, leak_surfaces,
+    Builder, Bvh, DVec3, EDGE_REACH, Interval, MeshBvh, MeshHit, NodePrecision,
+    Ray32, TraceCounts, camera_rays, incoherent_rays, leak_surfaces,
     shared_edge_rays, triangle_boxes, watertight,
 };
 use raystep_core::glam::Vec3;
@@ -27,7 +27,7 @@ fn bunny() -> Vec<[DVec3; 3]> {
 
 fn trees(triangles: &[[DVec3; 3]]) -> Vec<(NodePrecision, MeshBvh)> {
     let tree =
-        Bvh::build(&triangle_boxes(triangles), Split::BinnedSah { bins: 16 });
+        Bvh::build(&triangle_boxes(triangles), Builder::BinnedSah { bins: 16 });
     NodePrecision::ALL
         .iter()
         .map(|&p| (p, MeshBvh::new(triangles, &tree, p)))

@@ -63,7 +63,7 @@ fn answer(hit: Option<(usize, Hit)>) -> Option<(usize, f64)> {
 #[test]
 fn along_a_row_only_the_boxes_before_the_first_hit_are_opened() {
     let (objects, tests) = row(64);
-    let bvh = Bvh::for_objects(&objects, ch08::Split::Median);
+    let bvh = Bvh::for_objects(&objects, ch08::Builder::Median);
     // Along +x from x = −10 the first sphere is hit at t = 9; along −x
     // from x = 200 the last one (centre 189) at t = 10.
     let cases = [
@@ -91,7 +91,7 @@ fn along_a_row_only_the_boxes_before_the_first_hit_are_opened() {
 #[test]
 fn the_interval_bounds_the_answer() {
     let (objects, _) = row(8);
-    let bvh = Bvh::for_objects(&objects, ch08::Split::Median);
+    let bvh = Bvh::for_objects(&objects, ch08::Builder::Median);
     let ray = Ray::new(DVec3::new(-10.0, 0.0, 0.0), DVec3::X);
     let walk = |interval| {
         answer(near_first_closest_hit(&bvh, &objects, &ray, interval))
@@ -107,7 +107,7 @@ fn the_interval_bounds_the_answer() {
 fn no_tree_and_objects_outside_it() {
     let ray = Ray::new(DVec3::new(0.0, 5.0, 0.0), -DVec3::Y);
     // Nothing at all.
-    let none = Bvh::for_objects(&[], ch08::Split::Median);
+    let none = Bvh::for_objects(&[], ch08::Builder::Median);
     let hit = near_first_closest_hit(&none, &[], &ray, Interval::FORWARD);
     assert!(hit.is_none());
     // A plane (outside the tree) nearer than the sphere, then farther.
@@ -122,7 +122,7 @@ fn no_tree_and_objects_outside_it() {
             },
             sphere(DVec3::ZERO, 1.0),
         ];
-        let bvh = Bvh::for_objects(&objects, ch08::Split::Median);
+        let bvh = Bvh::for_objects(&objects, ch08::Builder::Median);
         assert_eq!(bvh.unbounded, vec![0], "the plane stays outside");
         let hit =
             near_first_closest_hit(&bvh, &objects, &ray, Interval::FORWARD);
@@ -144,7 +144,8 @@ fn seeded_rays_find_what_brute_force_finds() {
         })
         .collect();
     let mut disagreements = 0;
-    for split in [ch08::Split::Median, ch08::Split::BinnedSah { bins: 16 }] {
+    for split in [ch08::Builder::Median, ch08::Builder::BinnedSah { bins: 16 }]
+    {
         let bvh = Bvh::for_objects(&objects, split);
         for _ in 0..2000 {
             let origin = 40.0 * rng.unit_vector();

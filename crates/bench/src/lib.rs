@@ -19,7 +19,7 @@ mod run;
 
 use std::path::{Path, PathBuf};
 
-use ch08::{NodePrecision, Split};
+use ch08::{Builder, NodePrecision};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use raystep_core::{Aabb, DVec3};
 use raystep_scene::Mesh;
@@ -51,7 +51,7 @@ pub struct BenchOptions {
     /// Rounds (times are medians).
     pub rounds: usize,
     /// Our builders (with every precision in `precisions`).
-    pub builders: Vec<Split>,
+    pub builders: Vec<Builder>,
     /// Our node precisions.
     pub precisions: Vec<NodePrecision>,
     /// Run the peers too (needs the `peers` feature).
@@ -163,9 +163,9 @@ pub fn run(options: &BenchOptions) -> Result<BenchRun, BenchError> {
         })?;
     // Step 2: the methods; ours first (the reference), then the peers.
     let mut methods: Vec<Method> = Vec::new();
-    for &split in &options.builders {
+    for &builder in &options.builders {
         for &precision in &options.precisions {
-            methods.push(Method::Ours(split, precision));
+            methods.push(Method::Ours(builder, precision));
         }
     }
     if options.peers {
@@ -187,7 +187,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchRun, BenchError> {
                     &triangles,
                     &ch08::Bvh::build(
                         &ch08::triangle_boxes(&triangles),
-                        Split::BinnedSah { bins: 16 },
+                        Builder::BinnedSah { bins: 16 },
                     ),
                     NodePrecision::Double,
                 );

@@ -4,8 +4,8 @@
 use std::time::Instant;
 
 use ch08::{
-    Bvh, MeshBvh, NodePrecision, PreparedRay, Ray32, Split, TraceCounts,
-    triangle_boxes,
+    Builder, Bvh, MeshBvh, NodePrecision, PreparedRay, Ray32, TraceCounts,
+    TreeStats, triangle_boxes,
 };
 use raystep_core::{DVec3, Interval};
 
@@ -32,7 +32,7 @@ pub trait Tracer: Sync {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Method {
     /// Our hierarchy: a builder, and the precision of its nodes.
-    Ours(Split, NodePrecision),
+    Ours(Builder, NodePrecision),
     /// obvhs's `Bvh2` (PLOC, reinsertion, leaves collapsed by the SAH;
     /// its `medium_build` preset), walked by its own traversal.
     ObvhsBvh2,
@@ -51,16 +51,16 @@ pub struct Built {
     pub build_ms: f64,
     /// Bytes of nodes and reordered triangles (`None`: not known).
     pub bytes: Option<usize>,
-    /// Our trees only: the SAH cost, node count and depth.
-    pub tree: Option<(f64, usize, usize)>,
+    /// Our trees only: the tree's shape ([`Bvh::stats`]).
+    pub tree: Option<TreeStats>,
 }
 
 impl Method {
     /// The name tables show, e.g. `ours: SAH, 16 bins, f32`.
     pub fn name(&self) -> String {
         match self {
-            Method::Ours(split, precision) => {
-                format!("ours: {}, {}", split.name(), precision.name())
+            Method::Ours(builder, precision) => {
+                format!("ours: {}, {}", builder.name(), precision.name())
             }
             Method::ObvhsBvh2 => "obvhs Bvh2".into(),
             Method::ObvhsCwBvh => "obvhs CwBvh".into(),
@@ -86,19 +86,15 @@ impl Method {
     /// Builds the structure over `triangles`, timed.
     pub fn build(&self, triangles: &[[DVec3; 3]]) -> Built {
         match *self {
-            Method::Ours(split, precision) => {
+            Method::Ours(builder, precision) => {
                 let start = Instant::now();
-                let tree = Bvh::build(&triangle_boxes(triangles), split);
+                let tree = Bvh::build(&triangle_boxes(triangles), builder);
                 let bvh = MeshBvh::new(triangles, &tree, precision);
                 let build_ms = start.elapsed().as_secs_f64() * 1e3;
                 Built {
                     build_ms,
                     bytes: Some(bvh.bytes()),
-                    tree: Some((
-                        tree.sah_cost(),
-                        tree.nodes.len(),
-                        tree.depth(),
-                    )),
+                    tree: Some(tree.stats()),
                     tracer: Box::new(Ours(bvh)),
                 }
             }

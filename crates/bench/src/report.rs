@@ -1,7 +1,7 @@
 //! What a benchmark reports: per method and ray set, speed (median of the
 //! rounds), the work per ray that explains it, and disagreements; as a
 //! table for the terminal and as JSON.
-use ch08::TraceCounts;
+use ch08::{TraceCounts, TreeStats};
 use serde::Serialize;
 
 use crate::methods::Method;
@@ -37,15 +37,20 @@ pub struct MethodReport {
     pub build_ms: f64,
     /// Bytes of nodes and triangles, where known.
     pub bytes: Option<usize>,
-    /// Our trees: (SAH cost, nodes, depth).
+    /// Our trees: the tree's shape.
     #[serde(skip)]
-    pub tree: Option<(f64, usize, usize)>,
+    pub tree: Option<TreeStats>,
     /// Our trees: the SAH cost.
     pub sah_cost: Option<f64>,
     /// Our trees: the node count.
     pub nodes: Option<usize>,
     /// Our trees: the depth.
     pub depth: Option<usize>,
+    /// Our trees: the leaves' mean depth over a balanced tree's
+    /// ([`TreeStats::balance`]).
+    pub balance: Option<f64>,
+    /// Our trees: the mean objects per leaf.
+    pub mean_leaf: Option<f64>,
     /// One entry per ray set.
     pub sets: Vec<SetReport>,
 }
@@ -62,6 +67,8 @@ impl MethodReport {
             sah_cost: None,
             nodes: None,
             depth: None,
+            balance: None,
+            mean_leaf: None,
             sets: sets
                 .iter()
                 .map(|set| SetReport {
@@ -78,9 +85,12 @@ impl MethodReport {
 
     /// Fills the per-ray columns from the counts.
     pub fn finish(&mut self, sets: &[RaySet]) {
-        if let Some((sah, nodes, depth)) = self.tree {
-            (self.sah_cost, self.nodes, self.depth) =
-                (Some(sah), Some(nodes), Some(depth));
+        if let Some(tree) = self.tree {
+            self.sah_cost = Some(tree.sah_cost);
+            self.nodes = Some(tree.nodes);
+            self.depth = Some(tree.depth);
+            self.balance = Some(tree.balance);
+            self.mean_leaf = Some(tree.mean_leaf);
         }
         for (report, set) in self.sets.iter_mut().zip(sets) {
             let n = set.rays.len().max(1) as f64;
@@ -188,12 +198,16 @@ impl BenchReport {
             }
         }
         for method in &self.methods {
-            if let (Some(sah), Some(nodes), Some(depth)) =
-                (method.sah_cost, method.nodes, method.depth)
-            {
+            if let Some(tree) = method.tree {
                 out += &format!(
-                    "{}: SAH cost {sah:.1}, {nodes} nodes, depth {depth}\n",
-                    method.method
+                    "{}: SAH cost {:.1}, {} nodes, depth {}, balance {:.3}, \
+                     {:.2} per leaf\n",
+                    method.method,
+                    tree.sah_cost,
+                    tree.nodes,
+                    tree.depth,
+                    tree.balance,
+                    tree.mean_leaf,
                 );
             }
         }

@@ -4,7 +4,7 @@ use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use ch08::{NodePrecision, Split};
+use ch08::{Builder, NodePrecision};
 use raystep_bench::{BenchOptions, hit_bytes, run as run_bench};
 
 use crate::{Error, atomic_file};
@@ -24,17 +24,26 @@ pub enum BuilderArg {
     Sah16,
     /// Binned SAH, 32 bins.
     Sah32,
+    /// SAH over every cut between neighbouring centroids.
+    Sweep,
+    /// Exact agglomerative clustering (PLOC above 4096 triangles).
+    Agglomerative,
+    /// PLOC, radius 8.
+    Ploc,
 }
 
 impl BuilderArg {
-    fn split(self) -> Split {
+    fn builder(self) -> Builder {
         match self {
-            BuilderArg::Midpoint => Split::Midpoint,
-            BuilderArg::Median => Split::Median,
-            BuilderArg::Sah4 => Split::BinnedSah { bins: 4 },
-            BuilderArg::Sah8 => Split::BinnedSah { bins: 8 },
-            BuilderArg::Sah16 => Split::BinnedSah { bins: 16 },
-            BuilderArg::Sah32 => Split::BinnedSah { bins: 32 },
+            BuilderArg::Midpoint => Builder::Midpoint,
+            BuilderArg::Median => Builder::Median,
+            BuilderArg::Sah4 => Builder::BinnedSah { bins: 4 },
+            BuilderArg::Sah8 => Builder::BinnedSah { bins: 8 },
+            BuilderArg::Sah16 => Builder::BinnedSah { bins: 16 },
+            BuilderArg::Sah32 => Builder::BinnedSah { bins: 32 },
+            BuilderArg::Sweep => Builder::SweepSah,
+            BuilderArg::Agglomerative => Builder::Agglomerative,
+            BuilderArg::Ploc => Builder::Ploc { radius: 8 },
         }
     }
 }
@@ -106,7 +115,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         seed: options.seed,
         threads: options.threads,
         rounds: options.rounds,
-        builders: options.builders.iter().map(|b| b.split()).collect(),
+        builders: options.builders.iter().map(|b| b.builder()).collect(),
         precisions: options.precisions.iter().map(|p| p.precision()).collect(),
         peers: options.peers,
         brute_force: options.brute_force,

@@ -58,7 +58,7 @@ impl Accel {
             Accel::Bvh => |objects| {
                 Arc::new(ch08::Bvh::for_objects(
                     objects,
-                    ch08::Split::BinnedSah { bins: 16 },
+                    ch08::Builder::BinnedSah { bins: 16 },
                 ))
             },
         }

@@ -126,7 +126,9 @@ fn legend(
 
 /// Short builder names for point labels: `SAH 16 bins` → `SAH 16`.
 fn short(builder: &str) -> String {
-    builder.replace(" bins", "").replace(" full sweep", " sweep")
+    builder
+        .replace(" bins", "")
+        .replace(" full sweep", " sweep")
 }
 
 /// Build time against trace time, one point per builder and mesh.

@@ -8,8 +8,8 @@ use std::path::{Path, PathBuf};
 
 use ch07_figures::measurements::{ChartScene, chart_stages};
 use ch08::{
-    Aabb, Bvh, DVec3, NodePrecision, Split, leak_surfaces, leaks,
-    shared_edge_rays,
+    AGGLOMERATIVE_LIMIT, Aabb, Builder, Bvh, DVec3, NodePrecision,
+    leak_surfaces, leaks, shared_edge_rays,
 };
 use raystep_bench::{
     BruteForce, Method, MethodReport, RaySet, compare, incoherent,
@@ -35,27 +35,15 @@ fn load(path: &Path) -> Result<Vec<[DVec3; 3]>, String> {
         .map_err(|e| format!("{e} (the meshes live in ../shared/meshes)"))
 }
 
-/// The builders on the charts.
-pub fn builders() -> Vec<Split> {
-    vec![
-        Split::Midpoint,
-        Split::Median,
-        Split::BinnedSah { bins: 4 },
-        Split::BinnedSah { bins: 8 },
-        Split::BinnedSah { bins: 16 },
-        Split::BinnedSah { bins: 32 },
-    ]
-}
-
-/// Whether `builder` runs on `triangles` (the exact bottom-up builder is
-/// quadratic: small meshes only).
-fn runs_on(builder: Split, triangles: usize) -> bool {
-    let _ = (builder, triangles);
-    true
+/// Whether `builder` runs on `triangles`: the exact bottom-up builder
+/// falls back to PLOC beyond [`AGGLOMERATIVE_LIMIT`] objects, so it is
+/// charted on small meshes only.
+fn runs_on(builder: Builder, triangles: usize) -> bool {
+    builder != Builder::Agglomerative || triangles <= AGGLOMERATIVE_LIMIT
 }
 
 /// The hierarchy the other charts use: binned SAH, 16 bins.
-const CHART_BUILDER: Split = Split::BinnedSah { bins: 16 };
+const CHART_BUILDER: Builder = Builder::BinnedSah { bins: 16 };
 
 /// The rays of the builder and precision charts: a 256 × 256 camera and
 /// 65 536 incoherent rays (seed 1).
@@ -87,7 +75,7 @@ pub fn measure_builders(
     let mut rows = Vec::new();
     for (mesh, triangles) in &meshes {
         let sets = ray_sets(triangles);
-        let methods: Vec<Method> = builders()
+        let methods: Vec<Method> = Builder::ALL
             .into_iter()
             .filter(|b| runs_on(*b, triangles.len()))
             .map(|b| Method::Ours(b, NodePrecision::Single))
@@ -112,7 +100,9 @@ pub fn measure_builders(
             let Method::Ours(builder, _) = method else {
                 continue;
             };
-            let (sah_cost, nodes, depth) = report.tree.unwrap_or_default();
+            let Some(tree) = report.tree else {
+                continue;
+            };
             let incoherent = &report.sets[1];
             rows.push(BuilderRow {
                 mesh: mesh.to_string(),
@@ -120,9 +110,10 @@ pub fn measure_builders(
                 // no commas in a CSV field
                 builder: builder.name().replace(", ", " "),
                 build_ms: report.build_ms,
-                sah_cost,
-                nodes: nodes as u64,
-                depth: depth as u64,
+                sah_cost: tree.sah_cost,
+                nodes: tree.nodes as u64,
+                depth: tree.depth as u64,
+                balance: tree.balance,
                 primary_ns: ns(report, 0),
                 incoherent_ns: ns(report, 1),
                 incoherent_nodes: incoherent.nodes_per_ray.unwrap_or(0.0),

@@ -21,6 +21,9 @@ pub struct BuilderRow {
     pub nodes: u64,
     /// Its depth.
     pub depth: u64,
+    /// Its balance ([`ch08::TreeStats::balance`]: 1 for a perfectly
+    /// balanced tree).
+    pub balance: f64,
     /// Nanoseconds per primary ray (closest hit).
     pub primary_ns: f64,
     /// Nanoseconds per incoherent ray (closest hit).
@@ -33,13 +36,13 @@ pub struct BuilderRow {
 
 impl CsvRow for BuilderRow {
     const HEADER: &'static str = "mesh,triangles,builder,build_ms,sah_cost,\
-        nodes,depth,primary_ns,incoherent_ns,incoherent_nodes,\
+        nodes,depth,balance,primary_ns,incoherent_ns,incoherent_nodes,\
         incoherent_triangles";
 
     fn to_line(&self) -> String {
         let r = self;
         format!(
-            "{},{},{},{:.3},{:.3},{},{},{:.1},{:.1},{:.2},{:.2}",
+            "{},{},{},{:.3},{:.3},{},{},{:.3},{:.1},{:.1},{:.2},{:.2}",
             r.mesh,
             r.triangles,
             r.builder,
@@ -47,6 +50,7 @@ impl CsvRow for BuilderRow {
             r.sah_cost,
             r.nodes,
             r.depth,
+            r.balance,
             r.primary_ns,
             r.incoherent_ns,
             r.incoherent_nodes,
@@ -63,10 +67,11 @@ impl CsvRow for BuilderRow {
             sah_cost: r.number(4, "sah_cost")?,
             nodes: r.count(5, "nodes")?,
             depth: r.count(6, "depth")?,
-            primary_ns: r.number(7, "primary_ns")?,
-            incoherent_ns: r.number(8, "incoherent_ns")?,
-            incoherent_nodes: r.number(9, "incoherent_nodes")?,
-            incoherent_triangles: r.number(10, "incoherent_triangles")?,
+            balance: r.number(7, "balance")?,
+            primary_ns: r.number(8, "primary_ns")?,
+            incoherent_ns: r.number(9, "incoherent_ns")?,
+            incoherent_nodes: r.number(10, "incoherent_nodes")?,
+            incoherent_triangles: r.number(11, "incoherent_triangles")?,
         };
         let times = [row.build_ms, row.primary_ns, row.incoherent_ns];
         if times.iter().any(|t| !(*t > 0.0)) || !(row.sah_cost > 0.0) {

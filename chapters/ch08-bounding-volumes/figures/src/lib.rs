@@ -26,6 +26,7 @@ pub const CHAPTER: Chapter = Chapter {
         "watertight",
         "torus_quartic",
         "sphere_of_points",
+        "sah_split",
         "near_first",
     ],
     figures: diagrams::all,
