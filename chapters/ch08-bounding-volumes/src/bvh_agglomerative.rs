@@ -22,6 +22,7 @@ pub(crate) fn agglomerative(boxes: &[Aabb]) -> Bvh {
     flatten(boxes, objects, &merges, unbounded)
 }
 
+// ANCHOR: agglomerative
 /// The merges, closest pair first (see [`flatten`] for the numbering).
 fn exact_merges(boxes: &[Aabb], objects: &[u32]) -> Vec<[u32; 2]> {
     let m = objects.len();
@@ -71,3 +72,4 @@ fn nearest_to(s: usize, bounds: &[Aabb], alive: &[bool]) -> (f64, usize) {
     }
     best
 }
+// ANCHOR_END: agglomerative

@@ -19,6 +19,7 @@ pub(crate) fn ploc(boxes: &[Aabb], radius: usize) -> Bvh {
     flatten(boxes, objects, &merges, unbounded)
 }
 
+// ANCHOR: ploc
 /// The merges PLOC makes over `objects` (cluster `c` is `objects[c]`;
 /// see [`flatten`]).
 pub(crate) fn ploc_merges(
@@ -102,6 +103,7 @@ pub(crate) fn ploc_merges(
     }
     merges
 }
+// ANCHOR_END: ploc
 
 /// The Morton code of a cell (21 bits per axis): the bits of x, y and z
 /// interleaved, so that sorting by it follows a Z-shaped curve.

@@ -4,6 +4,7 @@
 //! three times.
 use crate::bvh_build::{Box32, Item};
 
+// ANCHOR: sweep_sah
 /// Reorders `objects` (sorted along the best axis) and says how many go
 /// left: the cut with the lowest A(left)·N(left) + A(right)·N(right).
 /// None if there are fewer than two objects.
@@ -41,6 +42,7 @@ pub(crate) fn sweep_sah(objects: &mut [Item]) -> Option<usize> {
     }
     Some(left)
 }
+// ANCHOR_END: sweep_sah
 
 /// Sorts by centroid along `axis`, ties by index.
 fn sort_along(objects: &mut [Item], axis: usize) {

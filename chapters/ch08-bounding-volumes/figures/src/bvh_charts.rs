@@ -64,9 +64,9 @@ fn log_log<'a, 'b>(
 ) -> Result<LogChart<'a, 'b>, ChartError> {
     let mut c = ChartBuilder::on(area)
         .margin(14)
-        .margin_right(30)
+        .margin_right(110)
         .x_label_area_size(58)
-        .y_label_area_size(78)
+        .y_label_area_size(90)
         .build_cartesian_2d(x.log_scale(), y.log_scale())?;
     c.configure_mesh()
         .x_desc(x_desc)
@@ -175,8 +175,8 @@ pub fn builders_chart() -> Result<Figure, ChartError> {
     )
 }
 
-/// The SAH cost against the measured trace time, both relative to the
-/// binned SAH's tree (16 bins) on the same mesh.
+/// The SAH cost against the work and the time per ray, all relative to
+/// the binned SAH's tree (16 bins) on the same mesh.
 pub fn sah_chart() -> Result<Figure, ChartError> {
     let rows: Vec<BuilderRow> = measured("ch08", "bvh-builders.csv")?;
     let reference = |mesh: &str| {
@@ -189,13 +189,16 @@ pub fn sah_chart() -> Result<Figure, ChartError> {
                 )
             })
     };
-    let mut points: Vec<(&BuilderRow, f64, f64, RGBColor)> = Vec::new();
+    let work = |r: &BuilderRow| r.incoherent_nodes + r.incoherent_triangles;
+    // (row, SAH ratio, work ratio, time ratio, colour)
+    let mut points: Vec<(&BuilderRow, f64, f64, f64, RGBColor)> = Vec::new();
     for (mesh, colour) in MESHES {
         let base = reference(mesh)?;
         for r in rows.iter().filter(|r| r.mesh == mesh) {
             points.push((
                 r,
                 r.sah_cost / base.sah_cost,
+                work(r) / work(base),
                 r.incoherent_ns / base.incoherent_ns,
                 colour,
             ));
@@ -203,40 +206,63 @@ pub fn sah_chart() -> Result<Figure, ChartError> {
     }
     chart(
         "bvh-sah",
-        "Does a lower SAH cost trace faster? Each builder's tree: its SAH cost (the expected node visits and triangle tests of a ray that hits the root) against its measured time per incoherent ray, both as ratios to the 16-bin SAH tree on the same mesh (log–log). On the grey diagonal the time follows the SAH exactly; above it a tree traces slower than its SAH cost predicts.",
+        "Does a lower SAH cost trace faster? Each builder's tree: its SAH cost (the model's node visits and triangle tests for a ray that hits the root) against what an incoherent ray costs through it, both as ratios to the 16-bin SAH tree on the same mesh. Dots: the node visits and triangle tests counted per ray (the same on every machine); rings: the time measured per ray (one thread, medians; the machine's noise is a few per cent). On the grey diagonal the cost follows the SAH exactly.",
         900,
-        560,
+        620,
         |area| {
             let (top, plot) = area.split_vertically(40);
-            legend(&top, &MESHES, 300, 220)?;
-            let all = points.iter().flat_map(|p| [p.1, p.2]);
-            let range = log_range(all.chain([0.8, 1.25]));
-            let mut c = log_log(
-                &plot,
-                range.clone(),
-                range.clone(),
-                "SAH cost ÷ the 16-bin SAH tree's",
-                "time per incoherent ray ÷ the 16-bin SAH tree's",
-            )?;
+            legend(&top, &MESHES, 110, 170)?;
+            // dots and rings
+            top.draw(&Circle::new((500, 20), 6, GREY.filled()))?;
+            top.draw(&Text::new("counted", (514, 11), font(16.0)))?;
+            top.draw(&Circle::new((630, 20), 6, GREY.stroke_width(2)))?;
+            top.draw(&Text::new("timed", (644, 11), font(16.0)))?;
+            let all = points.iter().flat_map(|p| [p.1, p.2, p.3]);
+            let (lo, hi) = all
+                .fold((1.0f64, 1.0f64), |(lo, hi), v| (lo.min(v), hi.max(v)));
+            let range = (lo - 0.03)..(hi + 0.03);
+            let mut c = ChartBuilder::on(&plot)
+                .margin(14)
+                .margin_right(30)
+                .x_label_area_size(58)
+                .y_label_area_size(78)
+                .build_cartesian_2d(range.clone(), range.clone())?;
+            c.configure_mesh()
+                .x_desc("SAH cost ÷ the 16-bin SAH tree's")
+                .y_desc("cost per incoherent ray ÷ the 16-bin SAH tree's")
+                .x_label_formatter(&|x| format!("{x:.2}"))
+                .y_label_formatter(&|y| format!("{y:.2}"))
+                .label_style(font(16.0))
+                .axis_desc_style(font(16.0))
+                .light_line_style(WHITE)
+                .draw()?;
+            let diagonal = [(range.start, range.start), (range.end, range.end)];
             c.draw_series(LineSeries::new(
-                [(range.start, range.start), (range.end, range.end)],
+                diagonal,
                 RGBColor(200, 200, 200).stroke_width(2),
             ))?;
             let mut labels = Labels::new();
-            let ends = [(range.start, range.start), (range.end, range.end)]
-                .map(|p| c.backend_coord(&p));
-            labels.avoid_line(&ends);
+            labels.avoid_line(&diagonal.map(|p| c.backend_coord(&p)));
             for p in &points {
                 labels.avoid_point(c.backend_coord(&(p.1, p.2)), 6);
+                labels.avoid_point(c.backend_coord(&(p.1, p.3)), 6);
             }
             c.draw_series(
                 points
                     .iter()
-                    .map(|p| Circle::new((p.1, p.2), 6, p.3.filled())),
+                    .map(|p| Circle::new((p.1, p.3), 6, p.4.stroke_width(2))),
+            )?;
+            c.draw_series(
+                points
+                    .iter()
+                    .map(|p| Circle::new((p.1, p.2), 6, p.4.filled())),
             )?;
             for p in &points {
+                if p.0.builder == REFERENCE {
+                    continue; // at (1, 1), named by the axes
+                }
                 let name = short(&p.0.builder);
-                label(&mut c, &mut labels, (p.1, p.2), &name, &GREY)?;
+                label(&mut c, &mut labels, (p.1, p.2), &name, &p.4)?;
             }
             Ok(())
         },
@@ -256,19 +282,20 @@ pub fn scaling_chart() -> Result<Figure, ChartError> {
             let entries = [("brute force", ORANGE), ("BVH", BLUE)];
             legend(&top, &entries, 300, 220)?;
             let x = log_range(rows.iter().map(|r| r.triangles as f64));
-            let y = log_range(rows.iter().map(|r| r.ns_per_ray));
+            let y = log_range(rows.iter().map(|r| r.ns_per_ray / 1e3));
             let mut c = log_log(
                 &plot,
                 x,
                 y,
                 "triangles in the mesh",
-                "time per ray, ns",
+                "time per ray, µs",
             )?;
             for (method, colour) in [(BRUTE, ORANGE), (BVH, BLUE)] {
                 let mut points: Vec<&ScalingRow> =
                     rows.iter().filter(|r| r.method == method).collect();
                 points.sort_by_key(|r| r.triangles);
-                let at = |r: &ScalingRow| (r.triangles as f64, r.ns_per_ray);
+                let at =
+                    |r: &ScalingRow| (r.triangles as f64, r.ns_per_ray / 1e3);
                 c.draw_series(LineSeries::new(
                     points.iter().map(|r| at(r)),
                     colour.mix(0.6).stroke_width(2),
@@ -324,7 +351,7 @@ pub fn precision_chart() -> Result<Figure, ChartError> {
                 .margin(10)
                 .margin_right(230)
                 .x_label_area_size(50)
-                .y_label_area_size(130)
+                .y_label_area_size(190)
                 .build_cartesian_2d(0.0..max * 1.1, -0.6..(n - 0.4))?;
             let names: Vec<String> = rows
                 .iter()
@@ -332,6 +359,8 @@ pub fn precision_chart() -> Result<Figure, ChartError> {
                 .collect();
             c.configure_mesh()
                 .x_desc("time per ray, ns")
+                .x_labels(6)
+                .x_label_formatter(&|x| format!("{x:.0}"))
                 .y_labels(rows.len())
                 .disable_y_mesh()
                 .y_label_formatter(&|y| {
