@@ -320,7 +320,8 @@ impl Bins {
         c: &Box32,
         count: usize,
     ) -> Option<Split> {
-        let count = count.max(2);
+        // (no more bins than objects: a small node sweeps few bins)
+        let count = count.min(objects.len()).max(2);
         let extent = c.max - c.min;
         let scale = Vec3A::select(
             extent.cmpgt(Vec3A::ZERO),
