@@ -412,23 +412,27 @@ impl MeshBvh {
     }
 }
 
-/// The walk's stack: on the call stack for trees up to 64 deep (no heap
-/// allocation per ray), on the heap for deeper ones. `capacity` (the
+/// The walk's stack: on the call stack for trees up to `FIXED` deep (no
+/// heap allocation per ray; 32 entries, as the array is cleared for every
+/// ray), on the heap for deeper ones. `capacity` (the
 /// tree's depth + 1) is never exceeded: each visit pops one node and
 /// pushes at most two.
 struct Stack<T: Copy> {
-    fixed: [T; 64],
+    fixed: [T; FIXED],
     spilled: Vec<T>,
     deep: bool,
     len: usize,
 }
 
+/// The deepest tree whose walk keeps its stack on the call stack.
+const FIXED: usize = 32;
+
 impl<T: Copy> Stack<T> {
     #[inline]
     fn new(capacity: usize, zero: T) -> Stack<T> {
-        let deep = capacity > 64;
+        let deep = capacity > FIXED;
         Stack {
-            fixed: [zero; 64],
+            fixed: [zero; FIXED],
             spilled: if deep {
                 vec![zero; capacity]
             } else {

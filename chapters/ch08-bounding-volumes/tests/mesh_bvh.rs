@@ -7,9 +7,9 @@
 use std::path::Path;
 
 use ch08::{
-    Builder, Bvh, DVec3, EDGE_REACH, Interval, MeshBvh, MeshHit, NodePrecision,
-    Ray32, TraceCounts, camera_rays, incoherent_rays, leak_surfaces,
-    shared_edge_rays, triangle_boxes, watertight,
+    Aabb, Builder, Bvh, BvhNode, DVec3, EDGE_REACH, Interval, MeshBvh, MeshHit,
+    NodePrecision, Ray32, TraceCounts, camera_rays, incoherent_rays,
+    leak_surfaces, shared_edge_rays, triangle_boxes, watertight,
 };
 use raystep_core::glam::Vec3;
 use raystep_scene::Mesh;
@@ -264,4 +264,79 @@ fn degenerate_meshes_agree_with_brute_force() {
         }
         assert_eq!(disagreements, 0, "{name}");
     }
+}
+
+/// A tree deeper than the walk's stack on the call stack (32 entries):
+/// triangles in the planes x = 0, 1, …, 79 in a chain built by hand, each
+/// interior node a leaf of one plane beside the rest (depth 80). Rays
+/// between each pair of planes, both ways, find the next plane through
+/// every layout, as brute force does.
+#[test]
+fn a_tree_deeper_than_the_fixed_stack_is_walked_on_the_heap() {
+    let n = 80usize;
+    let triangles: Vec<[DVec3; 3]> = (0..n)
+        .map(|k| {
+            let x = k as f64;
+            [
+                DVec3::new(x, -1.0, -1.0),
+                DVec3::new(x, 2.0, -1.0),
+                DVec3::new(x, -1.0, 2.0),
+            ]
+        })
+        .collect();
+    // Node 2j is the chain over planes j.., node 2j + 1 the leaf of plane
+    // j; the chain's children are nodes 2j + 1 and 2j + 2.
+    let boxes = triangle_boxes(&triangles);
+    let over = |from: usize| {
+        boxes[from..].iter().fold(Aabb::EMPTY, |a, b| a.union(*b))
+    };
+    let mut nodes = Vec::new();
+    for j in 0..n {
+        let last = j == n - 1;
+        nodes.push(BvhNode {
+            bounds: over(j),
+            first: if last { j as u32 } else { 2 * j as u32 + 1 },
+            count: u32::from(last),
+        });
+        if !last {
+            nodes.push(BvhNode {
+                bounds: boxes[j],
+                first: j as u32,
+                count: 1,
+            });
+        }
+    }
+    let tree = Bvh {
+        nodes,
+        order: (0..n as u32).collect(),
+        unbounded: Vec::new(),
+    };
+    assert_eq!(tree.depth(), n);
+    let mut wrong = 0;
+    for precision in NodePrecision::ALL {
+        let bvh = MeshBvh::new(&triangles, &tree, precision);
+        for k in 0..n - 1 {
+            for (direction, expected) in [(1.0, k + 1), (-1.0, k)] {
+                let ray = Ray32 {
+                    origin: Vec3::new(k as f32 + 0.5, 0.25, 0.25),
+                    direction: Vec3::new(direction, 0.0, 0.0),
+                };
+                let reach = Interval::new(0.0, f64::INFINITY);
+                let mut counts = TraceCounts::default();
+                let hit = bvh.closest_hit(&ray, reach, &mut counts);
+                let brute = bvh.brute_force(&ray, reach);
+                let shadow = bvh.any_hit(&ray, reach, &mut counts);
+                if hit.map(|h| h.triangle) != Some(expected as u32)
+                    || !agree(hit, brute)
+                    || !shadow
+                {
+                    wrong += 1;
+                    eprintln!(
+                        "{precision:?}: plane {k}, direction {direction}"
+                    );
+                }
+            }
+        }
+    }
+    assert_eq!(wrong, 0);
 }
