@@ -291,7 +291,7 @@ fn a_tree_deeper_than_the_fixed_stack_is_walked_on_the_heap() {
         boxes[from..].iter().fold(Aabb::EMPTY, |a, b| a.union(*b))
     };
     let mut nodes = Vec::new();
-    for j in 0..n {
+    for (j, &own) in boxes.iter().enumerate() {
         let last = j == n - 1;
         nodes.push(BvhNode {
             bounds: over(j),
@@ -300,7 +300,7 @@ fn a_tree_deeper_than_the_fixed_stack_is_walked_on_the_heap() {
         });
         if !last {
             nodes.push(BvhNode {
-                bounds: boxes[j],
+                bounds: own,
                 first: j as u32,
                 count: 1,
             });
