@@ -1,6 +1,5 @@
 //! `raystep bench MESH.obj`: build and trace times of chapter 8's
 //! hierarchies on a triangle mesh, beside obvhs and bvh (`--peers`).
-use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -33,7 +32,8 @@ pub enum BuilderArg {
 }
 
 impl BuilderArg {
-    fn builder(self) -> Builder {
+    /// The builder it names.
+    pub fn builder(self) -> Builder {
         match self {
             BuilderArg::Midpoint => Builder::Midpoint,
             BuilderArg::Median => Builder::Median,
@@ -60,7 +60,8 @@ pub enum PrecisionArg {
 }
 
 impl PrecisionArg {
-    fn precision(self) -> NodePrecision {
+    /// The precision it names.
+    pub fn precision(self) -> NodePrecision {
         match self {
             PrecisionArg::F64 => NodePrecision::Double,
             PrecisionArg::F32 => NodePrecision::Single,
@@ -69,31 +70,12 @@ impl PrecisionArg {
     }
 }
 
-/// What `raystep bench` was asked to do.
+/// What `raystep bench` was asked to do: the benchmark, and the files to
+/// write after it.
 #[derive(Debug)]
 pub struct Options {
-    /// The OBJ mesh.
-    pub mesh: PathBuf,
-    /// A ray file instead of the generated sets.
-    pub rays: Option<PathBuf>,
-    /// The primary camera's image size.
-    pub size: u32,
-    /// Incoherent rays.
-    pub incoherent: usize,
-    /// Their seed.
-    pub seed: u64,
-    /// Threads.
-    pub threads: usize,
-    /// Rounds.
-    pub rounds: usize,
-    /// Our builders.
-    pub builders: Vec<BuilderArg>,
-    /// Our precisions.
-    pub precisions: Vec<PrecisionArg>,
-    /// Run obvhs and bvh too.
-    pub peers: bool,
-    /// Rays per set checked against brute force.
-    pub brute_force: usize,
+    /// The benchmark.
+    pub bench: BenchOptions,
     /// The JSON report.
     pub json: Option<PathBuf>,
     /// The hit file.
@@ -107,21 +89,8 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     for path in options.json.iter().chain(&options.write_hits) {
         atomic_file::can_write(path)?;
     }
-    let finished = run_bench(&BenchOptions {
-        mesh: options.mesh.clone(),
-        rays: options.rays.clone(),
-        size: options.size,
-        incoherent: options.incoherent,
-        seed: options.seed,
-        threads: options.threads,
-        rounds: options.rounds,
-        builders: options.builders.iter().map(|b| b.builder()).collect(),
-        precisions: options.precisions.iter().map(|p| p.precision()).collect(),
-        peers: options.peers,
-        brute_force: options.brute_force,
-        progress: std::io::stderr().is_terminal(),
-    })
-    .map_err(|e| Error::Usage(e.to_string()))?;
+    let finished =
+        run_bench(&options.bench).map_err(|e| Error::Usage(e.to_string()))?;
     print!("{}", finished.report.table());
     if let Some(path) = &options.json {
         let mut text = serde_json::to_string_pretty(&finished.report)

@@ -30,7 +30,7 @@ mod student_edition;
 mod workspace;
 mod workspace_copy;
 
-use std::io;
+use std::io::{self, IsTerminal};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Duration;
@@ -461,17 +461,20 @@ fn main() -> ExitCode {
             json,
             write_hits,
         } => bench::run(&bench::Options {
-            mesh,
-            rays,
-            size,
-            incoherent,
-            seed,
-            threads: usize::from(threads),
-            rounds: usize::from(rounds),
-            builders,
-            precisions: precision,
-            peers,
-            brute_force,
+            bench: raystep_bench::BenchOptions {
+                mesh,
+                rays,
+                size,
+                incoherent,
+                seed,
+                threads: usize::from(threads),
+                rounds: usize::from(rounds),
+                builders: builders.iter().map(|b| b.builder()).collect(),
+                precisions: precision.iter().map(|p| p.precision()).collect(),
+                peers,
+                brute_force,
+                progress: io::stderr().is_terminal(),
+            },
             json,
             write_hits,
         }),

@@ -74,7 +74,8 @@ impl CsvRow for BuilderRow {
             incoherent_triangles: r.number(11, "incoherent_triangles")?,
         };
         let times = [row.build_ms, row.primary_ns, row.incoherent_ns];
-        if times.iter().any(|t| !(*t > 0.0)) || !(row.sah_cost > 0.0) {
+        let positive = |x: f64| x > 0.0; // false for NaN too
+        if !times.into_iter().all(positive) || !positive(row.sah_cost) {
             return Err(r.error("times and the SAH cost must be positive"));
         }
         Ok(row)
@@ -133,7 +134,8 @@ impl CsvRow for ScalingRow {
             nodes_per_ray: r.number(4, "nodes_per_ray")?,
             triangles_per_ray: r.number(5, "triangles_per_ray")?,
         };
-        if row.triangles == 0 || row.rays == 0 || !(row.ns_per_ray > 0.0) {
+        let timed = row.ns_per_ray > 0.0; // false for NaN too
+        if row.triangles == 0 || row.rays == 0 || !timed {
             return Err(r.error("expected triangles, rays and time > 0"));
         }
         Ok(row)
@@ -234,7 +236,8 @@ impl CsvRow for ZbufferRow {
             build_ms: r.number(3, "build_ms")?,
             millis: r.number(4, "millis")?,
         };
-        if row.triangles == 0 || !(row.millis > 0.0) {
+        let timed = row.millis > 0.0; // false for NaN too
+        if row.triangles == 0 || !timed {
             return Err(r.error("expected triangles and millis > 0"));
         }
         Ok(row)
