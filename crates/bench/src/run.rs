@@ -166,9 +166,10 @@ pub fn check_brute_force(
     let brute = BruteForce(triangles);
     sets.iter()
         .map(|set| {
-            let step = set.rays.len().div_ceil(count.max(1)).max(1);
+            // exactly min(count, len) rays, evenly spread: ray k·len/n
+            let (len, n) = (set.rays.len(), count.min(set.rays.len()));
             let sample: Vec<Ray32> =
-                set.rays.iter().step_by(step).copied().collect();
+                (0..n).map(|k| set.rays[k * len / n]).collect();
             let sampled = RaySet {
                 name: set.name.clone(),
                 question: set.question,
