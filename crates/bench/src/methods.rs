@@ -129,6 +129,39 @@ impl Tracer for Ours {
     }
 }
 
+/// The closest hit among `candidates` (a triangle's index and corners),
+/// each tested with the chapter's watertight test, counted.
+pub(crate) fn closest_among<'a>(
+    ray: &PreparedRay,
+    candidates: impl Iterator<Item = (u32, &'a [DVec3; 3])>,
+    interval: Interval,
+    counts: &mut TraceCounts,
+) -> Option<(u32, f32)> {
+    let mut interval = interval;
+    let mut closest = None;
+    for (k, v) in candidates {
+        counts.triangles += 1;
+        if let Some(t) = ray.triangle(v, interval) {
+            interval = interval.with_max(t);
+            closest = Some((k, t as f32));
+        }
+    }
+    closest
+}
+
+/// Does any of `candidates` meet the ray? Stops at the first, counted.
+pub(crate) fn any_among<'a>(
+    ray: &PreparedRay,
+    mut candidates: impl Iterator<Item = &'a [DVec3; 3]>,
+    interval: Interval,
+    counts: &mut TraceCounts,
+) -> bool {
+    candidates.any(|v| {
+        counts.triangles += 1;
+        ray.triangle(v, interval).is_some()
+    })
+}
+
 /// Brute force with the chapter's watertight test: every triangle.
 pub struct BruteForce<'a>(pub &'a [[DVec3; 3]]);
 
@@ -142,17 +175,8 @@ impl Tracer for BruteForce<'_> {
         if !ray.is_valid() {
             return None;
         }
-        let prepared = PreparedRay::new(ray);
-        let mut interval = interval;
-        let mut closest = None;
-        for (k, v) in self.0.iter().enumerate() {
-            counts.triangles += 1;
-            if let Some(t) = prepared.triangle(v, interval) {
-                interval = interval.with_max(t);
-                closest = Some((k as u32, t as f32));
-            }
-        }
-        closest
+        let all = self.0.iter().enumerate().map(|(k, v)| (k as u32, v));
+        closest_among(&PreparedRay::new(ray), all, interval, counts)
     }
 
     fn any(
@@ -161,13 +185,12 @@ impl Tracer for BruteForce<'_> {
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> bool {
-        if !ray.is_valid() {
-            return false;
-        }
-        let prepared = PreparedRay::new(ray);
-        self.0.iter().any(|v| {
-            counts.triangles += 1;
-            prepared.triangle(v, interval).is_some()
-        })
+        ray.is_valid()
+            && any_among(
+                &PreparedRay::new(ray),
+                self.0.iter(),
+                interval,
+                counts,
+            )
     }
 }

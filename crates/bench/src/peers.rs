@@ -6,7 +6,7 @@ use std::time::{Duration, Instant};
 use ch08::{PreparedRay, Ray32, TraceCounts};
 use raystep_core::{DVec3, Interval};
 
-use crate::methods::{Built, Method, Tracer};
+use crate::methods::{Built, Method, Tracer, any_among, closest_among};
 
 /// Builds a peer over `triangles`, timed from our triangles to a tracer.
 pub fn build(method: Method, triangles: &[[DVec3; 3]]) -> Built {
@@ -199,19 +199,11 @@ impl Tracer for BvhCrate {
         if !ray.is_valid() {
             return None;
         }
-        let prepared = PreparedRay::new(ray);
         let query = bvh_ray(ray);
-        let mut interval = interval;
-        let mut closest = None;
-        for shape in self.candidates(&query) {
-            counts.triangles += 1;
-            let v = &self.2[shape.index as usize];
-            if let Some(t) = prepared.triangle(v, interval) {
-                interval = interval.with_max(t);
-                closest = Some((shape.index, t as f32));
-            }
-        }
-        closest
+        let found = self
+            .candidates(&query)
+            .map(|shape| (shape.index, &self.2[shape.index as usize]));
+        closest_among(&PreparedRay::new(ray), found, interval, counts)
     }
 
     fn any(
@@ -223,13 +215,10 @@ impl Tracer for BvhCrate {
         if !ray.is_valid() {
             return false;
         }
-        let prepared = PreparedRay::new(ray);
         let query = bvh_ray(ray);
-        self.candidates(&query).any(|shape| {
-            counts.triangles += 1;
-            prepared
-                .triangle(&self.2[shape.index as usize], interval)
-                .is_some()
-        })
+        let found = self
+            .candidates(&query)
+            .map(|shape| &self.2[shape.index as usize]);
+        any_among(&PreparedRay::new(ray), found, interval, counts)
     }
 }

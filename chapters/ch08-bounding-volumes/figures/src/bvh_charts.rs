@@ -31,6 +31,14 @@ type LogChart<'a, 'b> =
 
 /// A range on a log axis around `values`, a little wider.
 fn log_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
+    padded_log_range(values, 1.6)
+}
+
+/// A range on a log axis around `values`, `pad` times wider each way.
+fn padded_log_range(
+    values: impl Iterator<Item = f64>,
+    pad: f64,
+) -> std::ops::Range<f64> {
     let (lo, hi) = values
         .filter(|v| *v > 0.0 && v.is_finite())
         .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
@@ -39,7 +47,7 @@ fn log_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
     if !lo.is_finite() {
         return 0.1..10.0;
     }
-    (lo / 1.6)..(hi * 1.6)
+    (lo / pad)..(hi * pad)
 }
 
 /// A number as an axis label: 0.5, 3, 250, 12 000.
@@ -96,16 +104,40 @@ where
     DB::ErrorType: 'static,
 {
     let pixel = c.backend_coord(&at);
-    if let Some((offset, pos)) = labels.place(pixel, text, 15.0, &Spot::ALL) {
-        c.draw_series(std::iter::once(
-            EmptyElement::at(at)
-                + Text::new(
-                    text.to_string(),
-                    offset,
-                    font(15.0).color(colour).pos(pos),
-                ),
-        ))?;
+    // in a crowd, a smaller label (still above the book's 11 px) may fit
+    for size in [15.0, 13.0] {
+        if let Some((offset, pos)) = labels.place(pixel, text, size, &Spot::ALL)
+        {
+            c.draw_series(std::iter::once(
+                EmptyElement::at(at)
+                    + Text::new(
+                        text.to_string(),
+                        offset,
+                        font(size).color(colour).pos(pos),
+                    ),
+            ))?;
+            break;
+        }
     }
+    Ok(())
+}
+
+/// A pale line through `points` (x, y) and a dot of `radius` on each.
+fn line_with_dots(
+    c: &mut LogChart,
+    points: &[(f64, f64)],
+    colour: RGBColor,
+    radius: i32,
+) -> Result<(), ChartError> {
+    c.draw_series(LineSeries::new(
+        points.iter().copied(),
+        colour.mix(0.6).stroke_width(2),
+    ))?;
+    c.draw_series(
+        points
+            .iter()
+            .map(|&p| Circle::new(p, radius, colour.filled())),
+    )?;
     Ok(())
 }
 
@@ -138,12 +170,15 @@ pub fn builders_chart() -> Result<Figure, ChartError> {
         "bvh-builders",
         "Each builder's build time against the time its tree takes per incoherent ray (closest hit, f32 nodes, one thread, log–log; medians of the rounds on this machine), on the bunny (3 674 triangles) and on its 235 136-triangle version. Down is faster tracing, left is faster building.",
         900,
-        560,
+        700,
         |area| {
             let (top, plot) = area.split_vertically(40);
             legend(&top, &MESHES, 300, 220)?;
             let x = log_range(rows.iter().map(|r| r.build_ms));
-            let y = log_range(rows.iter().map(|r| r.incoherent_ns));
+            // close around the times, so that the crowded points spread
+            let y =
+                padded_log_range(rows.iter().map(|r| r.incoherent_ns), 1.15);
+            let axis = [(x.start, y.start), (x.start, y.end)];
             let mut c = log_log(
                 &plot,
                 x,
@@ -152,6 +187,8 @@ pub fn builders_chart() -> Result<Figure, ChartError> {
                 "trace time per incoherent ray, ns",
             )?;
             let mut labels = Labels::new();
+            // no label across the y axis and its numbers
+            labels.avoid_line(&axis.map(|p| c.backend_coord(&p)));
             for r in &rows {
                 let at = c.backend_coord(&(r.build_ms, r.incoherent_ns));
                 labels.avoid_point(at, 6);
@@ -296,15 +333,9 @@ pub fn scaling_chart() -> Result<Figure, ChartError> {
                 points.sort_by_key(|r| r.triangles);
                 let at =
                     |r: &ScalingRow| (r.triangles as f64, r.ns_per_ray / 1e3);
-                c.draw_series(LineSeries::new(
-                    points.iter().map(|r| at(r)),
-                    colour.mix(0.6).stroke_width(2),
-                ))?;
-                c.draw_series(
-                    points
-                        .iter()
-                        .map(|r| Circle::new(at(r), 6, colour.filled())),
-                )?;
+                let line: Vec<(f64, f64)> =
+                    points.iter().map(|r| at(r)).collect();
+                line_with_dots(&mut c, &line, colour, 6)?;
                 for r in &points {
                     let work = r.nodes_per_ray + r.triangles_per_ray;
                     let text = if work >= 1000.0 {
@@ -424,6 +455,7 @@ pub fn zbuffer_chart() -> Result<Figure, ChartError> {
             let y = log_range(
                 rows.iter().flat_map(|r| [r.millis, r.millis + r.build_ms]),
             );
+            let (x_start, y_end) = (x.start, y.end);
             let mut c = log_log(
                 &plot,
                 x,
@@ -438,15 +470,9 @@ pub fn zbuffer_chart() -> Result<Figure, ChartError> {
                     .collect();
                 points.sort_by_key(|r| r.triangles);
                 let at = |r: &ZbufferRow| (r.triangles as f64, r.millis);
-                c.draw_series(LineSeries::new(
-                    points.iter().map(|r| at(r)),
-                    colour.mix(0.6).stroke_width(2),
-                ))?;
-                c.draw_series(
-                    points
-                        .iter()
-                        .map(|r| Circle::new(at(r), 5, colour.filled())),
-                )?;
+                let line: Vec<(f64, f64)> =
+                    points.iter().map(|r| at(r)).collect();
+                line_with_dots(&mut c, &line, colour, 5)?;
                 if method == RAYCAST_BVH {
                     c.draw_series(points.iter().map(|r| {
                         Circle::new(
@@ -467,6 +493,21 @@ pub fn zbuffer_chart() -> Result<Figure, ChartError> {
                     )))?;
                 }
             }
+            // the two other markers, explained in the empty upper left
+            let key = |row: i32| (x_start * 1.5, y_end / 2f64.powi(row + 1));
+            let style = font(15.0)
+                .color(&BLACK)
+                .pos(Pos::new(HPos::Left, VPos::Center));
+            c.draw_series(std::iter::once(
+                EmptyElement::at(key(0))
+                    + Circle::new((0, 0), 5, GREEN.stroke_width(2))
+                    + Text::new("BVH, build included", (14, 0), style.clone()),
+            ))?;
+            c.draw_series(std::iter::once(
+                EmptyElement::at(key(1))
+                    + TriangleMarker::new((0, 0), 8, GREY.filled())
+                    + Text::new("the bunny", (14, 0), style),
+            ))?;
             Ok(())
         },
     )
