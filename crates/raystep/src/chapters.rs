@@ -13,6 +13,7 @@ pub const CHAPTERS: &[&Chapter] = &[
     &ch06_figures::CHAPTER,
     &ch07_figures::CHAPTER,
     &ch08_figures::CHAPTER,
+    &ch09_figures::CHAPTER,
 ];
 
 /// The chapter the user named (`1`, `01`, `ch01`, …), among `chapters`.

@@ -111,8 +111,9 @@ enum Command {
         #[arg(long, value_name = "CHAPTER")]
         chapter: Option<String>,
         /// What searches the objects for each ray: the lecture's loop over
-        /// every object (`brute`), or chapter 8's bounding volume hierarchy
-        /// (`bvh`, binned SAH); the image is the same.
+        /// every object (`brute`), chapter 8's bounding volume hierarchy
+        /// (`bvh`, binned SAH) or chapter 9's uniform grid (`grid`); the
+        /// image is the same.
         #[arg(long, value_enum, default_value_t = render::Accel::Brute)]
         accel: render::Accel,
     },

@@ -40,6 +40,9 @@ pub enum Accel {
     Brute,
     /// Chapter 8's bounding volume hierarchy, binned SAH with 16 bins.
     Bvh,
+    /// Chapter 9's uniform grid: the resolution rule (3·∛N cells along
+    /// the longest axis), objects listed by their boxes, mailboxing on.
+    Grid,
 }
 
 impl Accel {
@@ -48,6 +51,7 @@ impl Accel {
         match self {
             Accel::Brute => "brute",
             Accel::Bvh => "bvh",
+            Accel::Grid => "grid",
         }
     }
 
@@ -59,6 +63,12 @@ impl Accel {
                 Arc::new(ch08::Bvh::for_objects(
                     objects,
                     ch08::Builder::BinnedSah { bins: 16 },
+                ))
+            },
+            Accel::Grid => |objects| {
+                Arc::new(ch09::Grid::for_objects(
+                    objects,
+                    ch09::Resolution::Rule,
                 ))
             },
         }

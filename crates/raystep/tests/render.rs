@@ -232,18 +232,20 @@ fn chapter_08_renders_its_primitives_and_others_refuse_them() {
     assert!(!refused.exists());
 }
 
-/// `--accel bvh` searches with chapter 8's hierarchy and draws the same
-/// bytes as the lecture's loop, for a chapter 6 scene and chapter 8's;
-/// an unknown value is refused by name.
+/// `--accel bvh` and `--accel grid` search with chapter 8's hierarchy and
+/// chapter 9's grid and draw the same bytes as the lecture's loop, for a
+/// chapter 6 scene, chapter 8's and chapter 9's; an unknown value is
+/// refused by name.
 #[test]
-fn the_bvh_draws_the_same_image_as_the_loop() {
+fn the_bvh_and_the_grid_draw_the_same_image_as_the_loop() {
     let dir = scratch("accel");
     for chapter_scene in [
         "ch06-refraction/scenes/materials.toml",
         "ch08-bounding-volumes/scenes/primitives.toml",
+        "ch09-grids/scenes/stadium.toml",
     ] {
         let mut images = Vec::new();
-        for accel in ["brute", "bvh"] {
+        for accel in ["brute", "bvh", "grid"] {
             let out = dir.join(format!("{accel}.png"));
             let run = raystep(&[
                 "render",
@@ -264,7 +266,11 @@ fn the_bvh_draws_the_same_image_as_the_loop() {
             assert!(said.contains(&format!("--accel {accel}")), "{said}");
             images.push(fs::read(&out).unwrap());
         }
-        assert!(images[0] == images[1], "{chapter_scene}: the PNGs differ");
+        assert!(images[0] == images[1], "{chapter_scene}: the BVH's differs");
+        assert!(
+            images[0] == images[2],
+            "{chapter_scene}: the grid's differs"
+        );
     }
     let run = raystep(&[
         "render",

@@ -1,0 +1,58 @@
+//! Exercise 1: the 3D DDA's setup (Amanatides and Woo, "A fast voxel
+//! traversal algorithm for ray tracing", 1987): the first cell, and per
+//! axis how far along the ray the next plane between cells is (`t_max`)
+//! and how far apart those planes are (`t_delta`).
+//!
+//! Fill in `dda_setup`; `cargo run --release -- check ch09` judges it.
+use raystep_core::{DVec3, Interval, Ray};
+
+use crate::Lattice;
+
+/// Where a ray's walk through a grid stands: the cell it is in and, per
+/// axis, the `t` of the next plane between cells.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dda {
+    /// The cell the ray is in.
+    pub cell: [usize; 3],
+    /// Per axis, the step to the next cell: +1, −1, or 0 for a ray
+    /// parallel to that axis's planes.
+    pub step: [i8; 3],
+    /// Per axis, the `t` at which the ray crosses into the next cell
+    /// along that axis (+∞ if it never does).
+    pub t_max: DVec3,
+    /// Per axis, the `t` it takes to cross one whole cell (+∞ if
+    /// parallel): `t_max` grows by this much at each step along the axis.
+    pub t_delta: DVec3,
+    /// Where the ray enters the grid (at least the interval's start).
+    pub t_enter: f64,
+    /// Where it leaves the grid, or the interval ends, if sooner.
+    pub t_exit: f64,
+}
+
+// ANCHOR: dda_setup
+/// The DDA's start for `ray` within `interval`, or None if the ray
+/// misses the grid's box there.
+pub fn dda_setup(
+    lattice: &Lattice,
+    ray: &Ray,
+    interval: Interval,
+) -> Option<Dda> {
+    // TODO:
+    // 1. Clip the ray to the grid's box: `lattice.bounds.hit(ray,
+    //    interval)` gives the part of the interval inside it (its `min`
+    //    is where the ray enters, its `max` where it leaves), or None.
+    // 2. The first cell: `lattice.cell_of(ray.at(entry t))`.
+    // 3. For each axis, with d = ray.direction[axis]:
+    //    - d > 0: step +1; the next plane is `lattice.plane(axis,
+    //      cell[axis] + 1)`; t_max = (plane − origin[axis]) / d;
+    //      t_delta = lattice.size[axis] / d.
+    //    - d < 0: step −1; the next plane is `lattice.plane(axis,
+    //      cell[axis])` (the cell's own lower plane); the same t_max;
+    //      t_delta = −size / d (a distance in t is never negative).
+    //    - d == 0 (also −0.0): step 0, t_max and t_delta +∞: the ray never
+    //      crosses a plane of this axis (and never divides 0 by 0).
+    // 4. Return the Dda with t_enter and t_exit from step 1.
+    let _ = (lattice, ray, interval);
+    todo!("ch09 exercise 1: dda_setup")
+}
+// ANCHOR_END: dda_setup
