@@ -54,6 +54,9 @@ pub struct BenchOptions {
     pub builders: Vec<Builder>,
     /// Our node precisions.
     pub precisions: Vec<NodePrecision>,
+    /// Our grids (chapter 9): each fill, at each resolution (`None`: the
+    /// rule).
+    pub grids: Vec<(ch09::Fill, Option<usize>)>,
     /// Run the peers too (needs the `peers` feature).
     pub peers: bool,
     /// Rays per set checked against brute force.
@@ -167,6 +170,9 @@ pub fn run(options: &BenchOptions) -> Result<BenchRun, BenchError> {
         for &precision in &options.precisions {
             methods.push(Method::Ours(builder, precision));
         }
+    }
+    for &(fill, cells) in &options.grids {
+        methods.push(Method::Grid(fill, cells));
     }
     if options.peers {
         methods.extend(Method::peers());

@@ -1,12 +1,14 @@
 //! What a benchmark compares: our hierarchy (a builder and a node
-//! precision) and, with the `peers` feature, other libraries' — each
-//! built on the same triangles and asked through one trait.
+//! precision), our grid (chapter 9) and, with the `peers` feature, other
+//! libraries' hierarchies — each built on the same triangles and asked
+//! through one trait.
 use std::time::Instant;
 
 use ch08::{
     Builder, Bvh, MeshBvh, NodePrecision, PreparedRay, Ray32, TraceCounts,
     TreeStats, triangle_boxes,
 };
+use ch09::{Fill, MeshGrid, Resolution};
 use raystep_core::{DVec3, Interval};
 
 /// A built structure's answers. Hits are `(triangle, t)`, with `t` in
@@ -33,6 +35,9 @@ pub trait Tracer: Sync {
 pub enum Method {
     /// Our hierarchy: a builder, and the precision of its nodes.
     Ours(Builder, NodePrecision),
+    /// Our uniform grid (chapter 9): how it is filled, and its cells
+    /// along the longest axis (`None`: the rule, 3·∛N).
+    Grid(Fill, Option<usize>),
     /// obvhs's `Bvh2` (PLOC, reinsertion, leaves collapsed by the SAH;
     /// its `medium_build` preset), walked by its own traversal.
     ObvhsBvh2,
@@ -62,6 +67,10 @@ impl Method {
             Method::Ours(builder, precision) => {
                 format!("ours: {}, {}", builder.name(), precision.name())
             }
+            Method::Grid(fill, cells) => match cells {
+                None => format!("grid: rule, {}", fill.name()),
+                Some(n) => format!("grid: {n} cells, {}", fill.name()),
+            },
             Method::ObvhsBvh2 => "obvhs Bvh2".into(),
             Method::ObvhsCwBvh => "obvhs CwBvh".into(),
             Method::BvhCrate => "bvh".into(),
@@ -70,7 +79,7 @@ impl Method {
 
     /// Is this one of ours?
     pub fn is_ours(&self) -> bool {
-        matches!(self, Method::Ours(..))
+        matches!(self, Method::Ours(..) | Method::Grid(..))
     }
 
     /// The peers this build was compiled with (none without the `peers`
@@ -98,6 +107,19 @@ impl Method {
                     tracer: Box::new(Ours(bvh)),
                 }
             }
+            Method::Grid(fill, cells) => {
+                let resolution =
+                    cells.map_or(Resolution::Rule, Resolution::Longest);
+                let start = Instant::now();
+                let grid = MeshGrid::new(triangles, resolution, fill);
+                let build_ms = start.elapsed().as_secs_f64() * 1e3;
+                Built {
+                    build_ms,
+                    bytes: Some(grid.bytes()),
+                    tree: None,
+                    tracer: Box::new(GridTracer(grid)),
+                }
+            }
             #[cfg(feature = "peers")]
             peer => crate::peers::build(peer, triangles),
             #[cfg(not(feature = "peers"))]
@@ -109,6 +131,30 @@ impl Method {
 struct Ours(MeshBvh);
 
 impl Tracer for Ours {
+    fn closest(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> Option<(u32, f32)> {
+        let hit = self.0.closest_hit(ray, interval, counts)?;
+        Some((hit.triangle, hit.t as f32))
+    }
+
+    fn any(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> bool {
+        self.0.any_hit(ray, interval, counts)
+    }
+}
+
+/// Chapter 9's grid: `nodes` in the counts are the cells visited.
+struct GridTracer(MeshGrid);
+
+impl Tracer for GridTracer {
     fn closest(
         &self,
         ray: &Ray32,

@@ -44,7 +44,9 @@ pub fn build(method: Method, triangles: &[[DVec3; 3]]) -> Built {
             let bvh = bvh::bvh::Bvh::build(&mut shapes);
             Box::new(BvhCrate(bvh, shapes, triangles.to_vec()))
         }
-        Method::Ours(..) => unreachable!("ours are built in methods.rs"),
+        Method::Ours(..) | Method::Grid(..) => {
+            unreachable!("ours are built in methods.rs")
+        }
     };
     Built {
         tracer,

@@ -1,5 +1,6 @@
 //! `raystep bench MESH.obj`: build and trace times of chapter 8's
-//! hierarchies on a triangle mesh, beside obvhs and bvh (`--peers`).
+//! hierarchies and chapter 9's grid on a triangle mesh, beside obvhs and
+//! bvh (`--peers`).
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -44,6 +45,34 @@ impl BuilderArg {
             BuilderArg::Sweep => Builder::SweepSah,
             BuilderArg::Agglomerative => Builder::Agglomerative,
             BuilderArg::Ploc => Builder::Ploc { radius: 8 },
+        }
+    }
+}
+
+/// `--accel`: which of our structures to run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum AccelArg {
+    /// Chapter 8's hierarchies (`--builders`, `--precision`).
+    Bvh,
+    /// Chapter 9's uniform grid (`--grid-fill`, `--grid-cells`).
+    Grid,
+}
+
+/// `--grid-fill`: which cells list a triangle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum FillArg {
+    /// Every cell its bounding box overlaps.
+    Boxes,
+    /// Only the cells it passes through (the triangle–box test).
+    Exact,
+}
+
+impl FillArg {
+    /// The fill it names.
+    pub fn fill(self) -> ch09::Fill {
+        match self {
+            FillArg::Boxes => ch09::Fill::Boxes,
+            FillArg::Exact => ch09::Fill::Exact,
         }
     }
 }

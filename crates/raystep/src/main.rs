@@ -117,8 +117,8 @@ enum Command {
         #[arg(long, value_enum, default_value_t = render::Accel::Brute)]
         accel: render::Accel,
     },
-    /// Time chapter 8's hierarchies on a triangle mesh (build, trace, the
-    /// work per ray), beside obvhs and bvh with `--peers`.
+    /// Time chapter 8's hierarchies and chapter 9's grid on a triangle mesh
+    /// (build, trace, the work per ray), beside obvhs and bvh with `--peers`.
     ///
     /// Ray sets: `primary` (a SIZE × SIZE pinhole camera fitted to the
     /// mesh), `shadow` (from a point light to every primary hit; any hit),
@@ -170,6 +170,26 @@ enum Command {
             default_value = "f32,f64"
         )]
         precision: Vec<bench::PrecisionArg>,
+        /// What to run of ours, comma-separated: chapter 8's hierarchies
+        /// (`bvh`: each of --builders in each --precision) and chapter 9's
+        /// uniform grid (`grid`: each --grid-fill; its "nodes" are the
+        /// cells a ray visits).
+        #[arg(long, value_enum, value_delimiter = ',', default_value = "bvh")]
+        accel: Vec<bench::AccelArg>,
+        /// The grid's cells along the longest axis [default: the rule,
+        /// 3·∛N for N triangles].
+        #[arg(long, value_name = "N",
+              value_parser = clap::value_parser!(u16).range(1..=512))]
+        grid_cells: Option<u16>,
+        /// How the grid lists triangles in cells, comma-separated: by
+        /// their bounding boxes, or exactly (the triangle–box test).
+        #[arg(
+            long,
+            value_enum,
+            value_delimiter = ',',
+            default_value = "exact"
+        )]
+        grid_fill: Vec<bench::FillArg>,
         /// Also run obvhs (Bvh2, CwBvh) and bvh on the same input.
         #[arg(long)]
         peers: bool,
@@ -457,6 +477,9 @@ fn main() -> ExitCode {
             rounds,
             builders,
             precision,
+            accel,
+            grid_cells,
+            grid_fill,
             peers,
             brute_force,
             json,
@@ -470,8 +493,20 @@ fn main() -> ExitCode {
                 seed,
                 threads: usize::from(threads),
                 rounds: usize::from(rounds),
-                builders: builders.iter().map(|b| b.builder()).collect(),
+                builders: if accel.contains(&bench::AccelArg::Bvh) {
+                    builders.iter().map(|b| b.builder()).collect()
+                } else {
+                    Vec::new()
+                },
                 precisions: precision.iter().map(|p| p.precision()).collect(),
+                grids: if accel.contains(&bench::AccelArg::Grid) {
+                    grid_fill
+                        .iter()
+                        .map(|f| (f.fill(), grid_cells.map(usize::from)))
+                        .collect()
+                } else {
+                    Vec::new()
+                },
                 peers,
                 brute_force,
                 progress: io::stderr().is_terminal(),

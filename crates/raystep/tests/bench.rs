@@ -124,6 +124,86 @@ fn generated_ray_sets_are_reported_by_name() {
     }
 }
 
+/// `--accel bvh,grid`: chapter 9's grid runs beside the hierarchy, each
+/// fill asked for at the rule's resolution or at `--grid-cells`, on the
+/// same rays, with the same answers.
+#[test]
+fn the_grid_runs_beside_the_hierarchy() {
+    let dir = scratch("grid");
+    let (obj, json) = (dir.join("square.obj"), dir.join("report.json"));
+    fs::write(&obj, SQUARE).unwrap();
+    for (cells, name) in [(None, "rule"), (Some("7"), "7 cells")] {
+        let mut args = vec![
+            "bench",
+            obj.to_str().unwrap(),
+            "--size",
+            "16",
+            "--incoherent",
+            "200",
+            "--rounds",
+            "1",
+            "--precision",
+            "f64",
+            "--accel",
+            "bvh,grid",
+            "--grid-fill",
+            "boxes,exact",
+            "--json",
+            json.to_str().unwrap(),
+        ];
+        if let Some(n) = cells {
+            args.extend(["--grid-cells", n]);
+        }
+        let run = raystep(&args);
+        assert!(run.status.success(), "{}", text(&run.stderr));
+        let report: serde_json::Value =
+            serde_json::from_str(&fs::read_to_string(&json).unwrap()).unwrap();
+        let methods: Vec<&str> = report["methods"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|m| m["method"].as_str().unwrap())
+            .collect();
+        assert_eq!(
+            methods,
+            [
+                "ours: SAH, 16 bins, f64".to_string(),
+                format!("grid: {name}, boxes"),
+                format!("grid: {name}, exact"),
+            ]
+        );
+        for method in report["methods"].as_array().unwrap() {
+            for set in method["sets"].as_array().unwrap() {
+                assert_eq!(set["disagreements"], 0, "{method}");
+            }
+        }
+    }
+    fs::remove_file(&json).unwrap();
+    // only the grid; a structure we do not have is refused by name
+    let run = raystep(&[
+        "bench",
+        obj.to_str().unwrap(),
+        "--size",
+        "4",
+        "--rounds",
+        "1",
+        "--accel",
+        "grid",
+    ]);
+    assert!(run.status.success(), "{}", text(&run.stderr));
+    assert!(!text(&run.stdout).contains("SAH"), "{}", text(&run.stdout));
+    refused(
+        &dir,
+        &[obj.to_str().unwrap(), "--accel", "kdtree"],
+        "kdtree",
+    );
+    refused(
+        &dir,
+        &[obj.to_str().unwrap(), "--grid-cells", "0"],
+        "--grid-cells",
+    );
+}
+
 /// Bad input: the exit status is not 0, stderr is one line naming
 /// `names`, and neither output file exists.
 fn refused(dir: &Path, args: &[&str], names: &str) {
