@@ -50,6 +50,7 @@ mod log_axis;
 pub mod numbers;
 mod output;
 mod page;
+pub mod plots;
 mod projection;
 mod side_view;
 mod style;

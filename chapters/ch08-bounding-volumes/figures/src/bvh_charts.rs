@@ -3,10 +3,14 @@
 //! trace time), brute force against the hierarchy as meshes grow, node
 //! precision against leaks, and chapter 7's z-buffer against ray casting
 //! through a hierarchy.
+use raystep_figure::plots::{
+    BLUE, GREEN, GREY, ORANGE, label, legend, line_with_dots, log_log,
+    log_range, padded_log_range,
+};
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::plotters::style::text_anchor::{HPos, Pos, VPos};
 use raystep_figure::{
-    ChartError, Figure, Labels, Spot, book_figures, chart, font, measured,
+    ChartError, Figure, Labels, book_figures, chart, font, measured,
 };
 
 use crate::bvh_rows::{
@@ -14,147 +18,11 @@ use crate::bvh_rows::{
     RAYCAST_BVH, ScalingRow, ZbufferRow,
 };
 
-/// Okabe–Ito colours (colour-blind safe).
-const BLUE: RGBColor = RGBColor(0, 114, 178);
-const ORANGE: RGBColor = RGBColor(213, 94, 0);
-const GREEN: RGBColor = RGBColor(0, 158, 115);
-const GREY: RGBColor = RGBColor(90, 90, 90);
-
 /// The meshes of `bvh-builders.csv`, with their colours.
 const MESHES: [(&str, RGBColor); 2] = [("bunny", BLUE), ("bunny-235k", ORANGE)];
 
 /// The builder whose tree the SAH chart compares against.
 const REFERENCE: &str = "SAH 16 bins";
-
-type LogChart<'a, 'b> =
-    ChartContext<'a, SVGBackend<'b>, Cartesian2d<LogCoord<f64>, LogCoord<f64>>>;
-
-/// A range on a log axis around `values`, a little wider.
-fn log_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
-    padded_log_range(values, 1.6)
-}
-
-/// A range on a log axis around `values`, `pad` times wider each way.
-fn padded_log_range(
-    values: impl Iterator<Item = f64>,
-    pad: f64,
-) -> std::ops::Range<f64> {
-    let (lo, hi) = values
-        .filter(|v| *v > 0.0 && v.is_finite())
-        .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
-            (lo.min(v), hi.max(v))
-        });
-    if !lo.is_finite() {
-        return 0.1..10.0;
-    }
-    (lo / pad)..(hi * pad)
-}
-
-/// A number as an axis label: 0.5, 3, 250, 12 000.
-fn number_label(x: &f64) -> String {
-    if *x >= 10_000.0 {
-        raystep_figure::numbers::grouped(x.round() as u64)
-    } else if *x >= 10.0 {
-        format!("{x:.0}")
-    } else {
-        let text = format!("{x:.2}");
-        text.trim_end_matches('0').trim_end_matches('.').to_string()
-    }
-}
-
-/// A log–log chart on `area` with the given ranges and axis names.
-fn log_log<'a, 'b>(
-    area: &'a raystep_figure::ChartArea<'b>,
-    x: std::ops::Range<f64>,
-    y: std::ops::Range<f64>,
-    x_desc: &str,
-    y_desc: &str,
-) -> Result<LogChart<'a, 'b>, ChartError> {
-    let mut c = ChartBuilder::on(area)
-        .margin(14)
-        .margin_right(110)
-        .x_label_area_size(58)
-        .y_label_area_size(90)
-        .build_cartesian_2d(x.log_scale(), y.log_scale())?;
-    c.configure_mesh()
-        .x_desc(x_desc)
-        .y_desc(y_desc)
-        .x_label_formatter(&number_label)
-        .y_label_formatter(&number_label)
-        .label_style(font(16.0))
-        .axis_desc_style(font(16.0))
-        .light_line_style(WHITE)
-        .draw()?;
-    Ok(c)
-}
-
-/// A label beside the point `at`, where it covers nothing else.
-fn label<DB: DrawingBackend, X, Y>(
-    c: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
-    labels: &mut Labels,
-    at: (X::ValueType, Y::ValueType),
-    text: &str,
-    colour: &RGBColor,
-) -> Result<(), ChartError>
-where
-    X: Ranged,
-    Y: Ranged,
-    X::ValueType: Clone,
-    Y::ValueType: Clone,
-    DB::ErrorType: 'static,
-{
-    let pixel = c.backend_coord(&at);
-    // in a crowd, a smaller label (still above the book's 11 px) may fit
-    for size in [15.0, 13.0] {
-        if let Some((offset, pos)) = labels.place(pixel, text, size, &Spot::ALL)
-        {
-            c.draw_series(std::iter::once(
-                EmptyElement::at(at)
-                    + Text::new(
-                        text.to_string(),
-                        offset,
-                        font(size).color(colour).pos(pos),
-                    ),
-            ))?;
-            break;
-        }
-    }
-    Ok(())
-}
-
-/// A pale line through `points` (x, y) and a dot of `radius` on each.
-fn line_with_dots(
-    c: &mut LogChart,
-    points: &[(f64, f64)],
-    colour: RGBColor,
-    radius: i32,
-) -> Result<(), ChartError> {
-    c.draw_series(LineSeries::new(
-        points.iter().copied(),
-        colour.mix(0.6).stroke_width(2),
-    ))?;
-    c.draw_series(
-        points
-            .iter()
-            .map(|&p| Circle::new(p, radius, colour.filled())),
-    )?;
-    Ok(())
-}
-
-/// A legend row of coloured dots and names, at the top of `area`.
-fn legend(
-    area: &raystep_figure::ChartArea,
-    entries: &[(&str, RGBColor)],
-    x: i32,
-    spacing: i32,
-) -> Result<(), ChartError> {
-    for (i, (name, colour)) in entries.iter().enumerate() {
-        let x = x + spacing * i as i32;
-        area.draw(&Circle::new((x, 20), 6, colour.filled()))?;
-        area.draw(&Text::new(*name, (x + 14, 11), font(16.0)))?;
-    }
-    Ok(())
-}
 
 /// Short builder names for point labels: `SAH 16 bins` → `SAH 16`.
 fn short(builder: &str) -> String {
