@@ -62,4 +62,6 @@ pub use scenes::{
     SCENE_SEED, STADIUM, STEM_SPHERES, STEM_STADIUM, stadium, stadium_toml,
     uniform_spheres, uniform_spheres_toml, uniform_triangles,
 };
-pub use stability::{RayCase, adversarial_rays};
+pub use stability::{
+    RayCase, StabilityScene, adversarial_rays, disagreements, stability_scenes,
+};

@@ -1,11 +1,131 @@
-//! Rays exactly where a grid walk can go wrong: along the lines and in
-//! the planes between cells, through their corners and edges, starting
+//! Where a grid can go wrong, counted: rays exactly along the lines and
+//! in the planes between cells, through their corners and edges, starting
 //! on a plane or inside the grid, parallel to an axis (with −0.0 too),
-//! grazing the grid's box. Seeded, so every run asks the same rays.
-use ch08::SplitMix64;
-use raystep_core::{DVec3, Ray};
+//! grazing the grid's box; scenes with objects much larger than a cell,
+//! a plane, one cell, cells nearly all empty, everything flat. Seeded, so
+//! every run asks the same rays; the tests ask a few of each, `raystep
+//! measure` over a million.
+use std::sync::Arc;
 
-use crate::Lattice;
+use ch03::BruteForce;
+use ch08::SplitMix64;
+use raystep_core::{DVec3, Interval, Ray};
+use raystep_world::{Accelerator, Object};
+
+use crate::{Lattice, Resolution, uniform_spheres, uniform_triangles};
+
+/// A scene of the catalogue: its name, objects and the grid's resolution.
+pub struct StabilityScene {
+    /// What is special about it, for tables.
+    pub name: &'static str,
+    /// Its objects.
+    pub objects: Vec<Object>,
+    /// The grid's cells.
+    pub resolution: Resolution,
+}
+
+/// The catalogue's scenes, the bunny's triangles given (the tests and
+/// `raystep measure` read them from `../shared/meshes`).
+pub fn stability_scenes(bunny: &[[DVec3; 3]]) -> Vec<StabilityScene> {
+    let object = |spec: raystep_scene::Shape| Object {
+        shape: ch08::shape(&spec).expect("a valid shape"),
+        material: 0,
+    };
+    let triangle = |t: &[DVec3; 3]| {
+        ch08::mesh_triangle(*t).map(|t| Object {
+            shape: Arc::new(t),
+            material: 0,
+        })
+    };
+    let spheres = |count, seed| {
+        uniform_spheres(count, seed)
+            .into_iter()
+            .map(|(center, radius)| {
+                object(raystep_scene::Shape::Sphere { center, radius })
+            })
+            .collect::<Vec<_>>()
+    };
+    // objects much larger than a cell: two big triangles across the whole
+    // grid, and a plane outside it
+    let mut mixed = spheres(400, 1);
+    let corner = |x, y, z| DVec3::new(x, y, z);
+    mixed.extend(
+        [
+            [
+                corner(-1., -1., -1.),
+                corner(1., -1., 1.),
+                corner(1., 1., -1.),
+            ],
+            [
+                corner(-1., 1., 1.),
+                corner(1., -1., 1.),
+                corner(-1., -1., -1.),
+            ],
+        ]
+        .iter()
+        .filter_map(triangle),
+    );
+    mixed.push(object(raystep_scene::Shape::Plane {
+        point: DVec3::new(0.0, -0.9, 0.0),
+        normal: DVec3::Y,
+    }));
+    let flat: Vec<Object> = uniform_triangles(300, 2)
+        .iter()
+        .map(|t| t.map(|v| DVec3::new(v.x, v.y, 0.0)))
+        .filter_map(|t| triangle(&t))
+        .collect();
+    let scene = |name, objects, resolution| StabilityScene {
+        name,
+        objects,
+        resolution,
+    };
+    vec![
+        scene(
+            "the bunny, rule",
+            bunny.iter().filter_map(triangle).collect(),
+            Resolution::Rule,
+        ),
+        scene(
+            "spheres, big triangles, a plane",
+            mixed.clone(),
+            Resolution::Rule,
+        ),
+        scene("the same, one cell", mixed, Resolution::Cells([1, 1, 1])),
+        scene(
+            "10 spheres in 64 cells a side",
+            spheres(10, 3),
+            Resolution::Longest(64),
+        ),
+        scene("flat: triangles in z = 0", flat, Resolution::Rule),
+    ]
+}
+
+/// How many of `rays` `accelerator` answers differently from brute force:
+/// a closest hit at another t (or a hit against a miss), or another
+/// any-hit answer (over t ≥ 0, and over 0 ≤ t ≤ 1). Two objects hit at
+/// the very same t are a tie, not a disagreement.
+pub fn disagreements(
+    accelerator: &dyn Accelerator,
+    objects: &[Object],
+    rays: &[Ray],
+) -> usize {
+    rays.iter()
+        .filter(|ray| {
+            let closest = |a: &dyn Accelerator| {
+                a.closest_hit(objects, ray, Interval::FORWARD)
+                    .map(|(_, hit)| hit.t)
+            };
+            let any = |a: &dyn Accelerator, interval| {
+                a.any_hit(objects, ray, interval)
+            };
+            let short = Interval::new(0.0, 1.0);
+            closest(accelerator) != closest(&BruteForce)
+                || any(accelerator, Interval::FORWARD)
+                    != any(&BruteForce, Interval::FORWARD)
+                || any(accelerator, short) != any(&BruteForce, short)
+        })
+        .count()
+}
 
 /// One kind of dangerous ray, and a set of them.
 #[derive(Clone, Debug)]

@@ -6,61 +6,12 @@ mod common;
 
 use ch08::{Ray32, TraceCounts};
 use ch09::{
-    DVec3, Fill, Grid, MeshGrid, Object, Resolution, adversarial_rays,
-    uniform_spheres, uniform_triangles,
+    DVec3, Fill, Grid, MeshGrid, Resolution, adversarial_rays, disagreements,
+    stability_scenes, uniform_spheres,
 };
 use raystep_check::Table;
 
-use common::{
-    bunny, disagreements, plane_object, sphere_objects, triangle_objects,
-};
-
-/// The scenes: a name, the objects and the resolution.
-fn scenes() -> Vec<(&'static str, Vec<Object>, Resolution)> {
-    let mut spheres = sphere_objects(&uniform_spheres(400, 1));
-    // objects much larger than a cell: two big triangles across the
-    // whole grid, and a plane outside it
-    spheres.extend(triangle_objects(&[
-        [
-            DVec3::new(-1.0, -1.0, -1.0),
-            DVec3::new(1.0, -1.0, 1.0),
-            DVec3::new(1.0, 1.0, -1.0),
-        ],
-        [
-            DVec3::new(-1.0, 1.0, 1.0),
-            DVec3::new(1.0, -1.0, 1.0),
-            DVec3::new(-1.0, -1.0, -1.0),
-        ],
-    ]));
-    spheres.push(plane_object(DVec3::new(0.0, -0.9, 0.0), DVec3::Y));
-    let flat: Vec<[DVec3; 3]> = uniform_triangles(300, 2)
-        .into_iter()
-        .map(|t| t.map(|v| DVec3::new(v.x, v.y, 0.0)))
-        .collect();
-    vec![
-        (
-            "the bunny, rule",
-            triangle_objects(&bunny()),
-            Resolution::Rule,
-        ),
-        (
-            "spheres, big triangles, a plane",
-            spheres.clone(),
-            Resolution::Rule,
-        ),
-        ("the same, one cell", spheres, Resolution::Cells([1, 1, 1])),
-        (
-            "10 spheres in 64 cells a side",
-            sphere_objects(&uniform_spheres(10, 3)),
-            Resolution::Longest(64),
-        ),
-        (
-            "flat: triangles in z = 0",
-            triangle_objects(&flat),
-            Resolution::Rule,
-        ),
-    ]
-}
+use common::{bunny, sphere_objects};
 
 /// Every scene × every kind of dangerous ray: 0 disagreements, with the
 /// mailbox on and off.
@@ -68,13 +19,14 @@ fn scenes() -> Vec<(&'static str, Vec<Object>, Resolution)> {
 fn stability_catalogue() {
     let mut table = Table::new(&["scene", "rays", "mailbox on", "mailbox off"]);
     let mut wrong = 0;
-    for (name, objects, resolution) in scenes() {
-        let mut grid = Grid::for_objects(&objects, resolution);
+    for scene in stability_scenes(&bunny()) {
+        let (name, objects) = (scene.name, &scene.objects);
+        let mut grid = Grid::for_objects(objects, scene.resolution);
         for case in adversarial_rays(&grid.lattice, 60, 7) {
             let mut row = Vec::new();
             for mailboxing in [true, false] {
                 grid.mailboxing = mailboxing;
-                let n = disagreements(&grid, &objects, &case.rays);
+                let n = disagreements(&grid, objects, &case.rays);
                 wrong += n;
                 row.push(n.to_string());
             }

@@ -25,7 +25,7 @@ use raystep_core::{Aabb, DVec3};
 use raystep_scene::Mesh;
 
 pub use error::BenchError;
-pub use methods::{BruteForce, Built, Method, Tracer};
+pub use methods::{BruteForce, Built, GridSpec, Method, Tracer};
 pub use rays::{
     Question, RAY_BYTES, RaySet, incoherent, primary, ray_bytes, read_rays,
     shadow,
@@ -54,9 +54,8 @@ pub struct BenchOptions {
     pub builders: Vec<Builder>,
     /// Our node precisions.
     pub precisions: Vec<NodePrecision>,
-    /// Our grids (chapter 9): each fill, at each resolution (`None`: the
-    /// rule).
-    pub grids: Vec<(ch09::Fill, Option<usize>)>,
+    /// Our grids (chapter 9).
+    pub grids: Vec<GridSpec>,
     /// Run the peers too (needs the `peers` feature).
     pub peers: bool,
     /// Rays per set checked against brute force.
@@ -171,8 +170,8 @@ pub fn run(options: &BenchOptions) -> Result<BenchRun, BenchError> {
             methods.push(Method::Ours(builder, precision));
         }
     }
-    for &(fill, cells) in &options.grids {
-        methods.push(Method::Grid(fill, cells));
+    for &spec in &options.grids {
+        methods.push(Method::Grid(spec));
     }
     if options.peers {
         methods.extend(Method::peers());

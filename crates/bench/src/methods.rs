@@ -35,9 +35,8 @@ pub trait Tracer: Sync {
 pub enum Method {
     /// Our hierarchy: a builder, and the precision of its nodes.
     Ours(Builder, NodePrecision),
-    /// Our uniform grid (chapter 9): how it is filled, and its cells
-    /// along the longest axis (`None`: the rule, 3·∛N).
-    Grid(Fill, Option<usize>),
+    /// Our uniform grid (chapter 9).
+    Grid(GridSpec),
     /// obvhs's `Bvh2` (PLOC, reinsertion, leaves collapsed by the SAH;
     /// its `medium_build` preset), walked by its own traversal.
     ObvhsBvh2,
@@ -46,6 +45,28 @@ pub enum Method {
     /// The `bvh` crate (svenstaro): its binned-SAH build and its
     /// traversal iterator.
     BvhCrate,
+}
+
+/// How one of our grids is made and walked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct GridSpec {
+    /// Which cells list a triangle.
+    pub fill: Fill,
+    /// Cells along the longest axis (`None`: the rule, 3·∛N).
+    pub cells: Option<usize>,
+    /// Does a ray skip triangles it has already tested?
+    pub mailbox: bool,
+}
+
+impl GridSpec {
+    /// The rule's resolution, filled by `fill`, mailboxing on.
+    pub fn rule(fill: Fill) -> GridSpec {
+        GridSpec {
+            fill,
+            cells: None,
+            mailbox: true,
+        }
+    }
 }
 
 /// What building gave: the tracer and what it is made of.
@@ -67,10 +88,14 @@ impl Method {
             Method::Ours(builder, precision) => {
                 format!("ours: {}, {}", builder.name(), precision.name())
             }
-            Method::Grid(fill, cells) => match cells {
-                None => format!("grid: rule, {}", fill.name()),
-                Some(n) => format!("grid: {n} cells, {}", fill.name()),
-            },
+            Method::Grid(spec) => {
+                let cells = match spec.cells {
+                    None => "rule".to_string(),
+                    Some(n) => format!("{n} cells"),
+                };
+                let mailbox = if spec.mailbox { "" } else { ", no mailbox" };
+                format!("grid: {cells}, {}{mailbox}", spec.fill.name())
+            }
             Method::ObvhsBvh2 => "obvhs Bvh2".into(),
             Method::ObvhsCwBvh => "obvhs CwBvh".into(),
             Method::BvhCrate => "bvh".into(),
@@ -107,11 +132,12 @@ impl Method {
                     tracer: Box::new(Ours(bvh)),
                 }
             }
-            Method::Grid(fill, cells) => {
+            Method::Grid(spec) => {
                 let resolution =
-                    cells.map_or(Resolution::Rule, Resolution::Longest);
+                    spec.cells.map_or(Resolution::Rule, Resolution::Longest);
                 let start = Instant::now();
-                let grid = MeshGrid::new(triangles, resolution, fill);
+                let mut grid = MeshGrid::new(triangles, resolution, spec.fill);
+                grid.grid.mailboxing = spec.mailbox;
                 let build_ms = start.elapsed().as_secs_f64() * 1e3;
                 Built {
                     build_ms,

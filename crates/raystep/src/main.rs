@@ -502,7 +502,11 @@ fn main() -> ExitCode {
                 grids: if accel.contains(&bench::AccelArg::Grid) {
                     grid_fill
                         .iter()
-                        .map(|f| (f.fill(), grid_cells.map(usize::from)))
+                        .map(|f| raystep_bench::GridSpec {
+                            fill: f.fill(),
+                            cells: grid_cells.map(usize::from),
+                            mailbox: true,
+                        })
                         .collect()
                 } else {
                     Vec::new()

@@ -1,12 +1,9 @@
-//! What the chapter's test files share: the bunny, scenes of objects, and
-//! the comparison with brute force.
+//! What the chapter's test files share: the bunny, and objects.
 #![allow(dead_code)]
 use std::path::Path;
-use std::sync::Arc;
 
-use ch03::{BruteForce, Sphere};
-use ch09::{Accelerator, DVec3, Interval, Object, Ray};
-use raystep_scene::Mesh;
+use ch09::{DVec3, Object};
+use raystep_scene::{Mesh, Shape};
 
 /// The Stanford bunny beside the workspace: `../shared/meshes/bunny.obj`.
 pub fn bunny() -> Vec<[DVec3; 3]> {
@@ -20,57 +17,23 @@ pub fn bunny() -> Vec<[DVec3; 3]> {
         .collect()
 }
 
-/// Triangles as objects (chapter 8's watertight triangle); zero-area
-/// ones left out.
-pub fn triangle_objects(triangles: &[[DVec3; 3]]) -> Vec<Object> {
-    triangles
-        .iter()
-        .filter_map(|&t| ch08::mesh_triangle(t))
-        .map(|t| Object {
-            shape: Arc::new(t),
-            material: 0,
-        })
-        .collect()
+/// A shape of a scene file as an object (chapter 8's shapes).
+pub fn object(spec: Shape) -> Object {
+    Object {
+        shape: ch08::shape(&spec).expect("a valid shape"),
+        material: 0,
+    }
 }
 
-/// Chapter 3's spheres as objects.
+/// Spheres as objects.
 pub fn sphere_objects(spheres: &[(DVec3, f64)]) -> Vec<Object> {
     spheres
         .iter()
-        .map(|&(c, r)| Object {
-            shape: Arc::new(Sphere::new(c, r)),
-            material: 0,
-        })
+        .map(|&(center, radius)| object(Shape::Sphere { center, radius }))
         .collect()
 }
 
 /// A plane (no finite box) as an object.
 pub fn plane_object(point: DVec3, normal: DVec3) -> Object {
-    let shape = ch08::shape(&raystep_scene::Shape::Plane { point, normal })
-        .expect("a plane");
-    Object { shape, material: 0 }
-}
-
-/// How many of `rays` `accelerator` answers differently from brute force:
-/// a closest hit at another t (or a hit against a miss), or another
-/// any-hit answer (within the forward interval, and within t ≤ 1).
-pub fn disagreements(
-    accelerator: &dyn Accelerator,
-    objects: &[Object],
-    rays: &[Ray],
-) -> usize {
-    rays.iter()
-        .filter(|ray| {
-            let closest = |a: &dyn Accelerator| {
-                a.closest_hit(objects, ray, Interval::FORWARD)
-                    .map(|(_, hit)| hit.t)
-            };
-            let short = Interval::new(0.0, 1.0);
-            closest(accelerator) != closest(&BruteForce)
-                || accelerator.any_hit(objects, ray, Interval::FORWARD)
-                    != BruteForce.any_hit(objects, ray, Interval::FORWARD)
-                || accelerator.any_hit(objects, ray, short)
-                    != BruteForce.any_hit(objects, ray, short)
-        })
-        .count()
+    object(Shape::Plane { point, normal })
 }
