@@ -44,9 +44,9 @@ pub fn walk(
     //       at t_out = min(t_max[axis], t_exit).
     //    b. Call `visit(Visit { cell, index: lattice.index(cell), t_in,
     //       t_out })`; if it returns `ControlFlow::Break(())`, return.
-    //    c. If t_max[axis] is not below t_exit, the ray leaves the grid
-    //       (or its interval) in this cell: return. Write it as
-    //       `!(t_max < t_exit)` so that +∞ and NaN stop the loop too.
+    //    c. If t_max[axis] ≥ t_exit, the ray leaves the grid (or its
+    //       interval) in this cell: return. (+∞ ≥ +∞ is true, so a ray
+    //       parallel to every plane stops; stop on a NaN t_max too.)
     //    d. Step: cell[axis] += step[axis]; if that leaves the grid
     //       (below 0 or at `lattice.cells[axis]`), return.
     //    e. The new cell is entered at the old t_max[axis]; then

@@ -67,6 +67,15 @@ impl Grid {
         build(boxes, resolution, |_, _| true)
     }
 
+    /// A grid over `boxes` with cells `lattice` chosen by the caller (the
+    /// figures want unit cells at whole coordinates), each object listed
+    /// in every cell its box overlaps; objects outside the lattice are
+    /// listed in the cells at its edge.
+    pub fn build_on(boxes: &[Aabb], lattice: Lattice) -> Grid {
+        let (inside, unbounded) = split_bounded(boxes);
+        fill(boxes, inside, unbounded, lattice, |_, _| true)
+    }
+
     /// The grid over the objects' boxes ([`Shape::bounds`]).
     ///
     /// [`Shape::bounds`]: raystep_core::Shape::bounds
@@ -136,15 +145,7 @@ fn build(
 ) -> Grid {
     // Step 1: objects with a finite box go in the grid, the others
     // (planes, and empty boxes) in a list beside it.
-    let (mut inside, mut unbounded) = (Vec::new(), Vec::new());
-    for (i, b) in boxes.iter().enumerate() {
-        let finite = b.min.is_finite() && b.max.is_finite();
-        if finite && !b.is_empty() {
-            inside.push(i as u32);
-        } else {
-            unbounded.push(i as u32);
-        }
-    }
+    let (inside, unbounded) = split_bounded(boxes);
     // Step 2: the grid's box: around every object, a little larger so
     // that a flat scene still has cells with some thickness.
     let around = inside
@@ -166,6 +167,31 @@ fn build(
     };
     // Step 3: the resolution.
     let lattice = Lattice::new(bounds, resolution.cells(&bounds, inside.len()));
+    fill(boxes, inside, unbounded, lattice, overlaps)
+}
+
+/// Objects with a finite, non-empty box, and the others.
+fn split_bounded(boxes: &[Aabb]) -> (Vec<u32>, Vec<u32>) {
+    let (mut inside, mut unbounded) = (Vec::new(), Vec::new());
+    for (i, b) in boxes.iter().enumerate() {
+        let finite = b.min.is_finite() && b.max.is_finite();
+        if finite && !b.is_empty() {
+            inside.push(i as u32);
+        } else {
+            unbounded.push(i as u32);
+        }
+    }
+    (inside, unbounded)
+}
+
+/// The cell lists of `inside` on `lattice`: steps 4 and 5 of the build.
+fn fill(
+    boxes: &[Aabb],
+    inside: Vec<u32>,
+    unbounded: Vec<u32>,
+    lattice: Lattice,
+    overlaps: impl Fn(u32, &Aabb) -> bool,
+) -> Grid {
     let pad = reach(&lattice);
     // Step 4: each object's range of cells (its box, a little larger),
     // and the cells in it that `overlaps` accepts: (cell, object) pairs.

@@ -6,7 +6,7 @@ use std::ops::ControlFlow;
 use raystep_core::{Hit, Interval, Ray};
 use raystep_world::{Accelerator, Object};
 
-use crate::{Grid, Mailbox, walk};
+use crate::{Grid, Mailbox, Visit, walk};
 
 /// How far past a cell's exit a hit may be measured and still count as
 /// inside it: rounding moves a cell's computed exit `t` by far less than
@@ -20,18 +20,23 @@ pub fn hit_in_cell(t: f64, t_out: f64) -> bool {
     t <= t_out - EXIT_SLACK * t_out.abs()
 }
 
-impl Accelerator for Grid {
+impl Grid {
     // ANCHOR: closest_hit
     /// The closest hit: the cells in order along the ray. An object can
     /// stretch over several cells, so a hit found in one cell may lie in
     /// a later one: it is kept (the interval now ends there), and the
     /// walk goes on until it reaches the cell that holds it: a closer
     /// hit may still wait in the cells between.
-    fn closest_hit(
+    ///
+    /// `observe` is told each cell as the walk enters it (`None`), and
+    /// each object as it is tested there (`Some(index)`): the figures draw
+    /// the walk from it.
+    pub fn closest_hit_observed(
         &self,
         objects: &[Object],
         ray: &Ray,
         interval: Interval,
+        observe: &mut dyn FnMut(Visit, Option<u32>),
     ) -> Option<(usize, Hit)> {
         let mut interval = interval;
         let mut closest = None;
@@ -49,6 +54,7 @@ impl Accelerator for Grid {
         // Step 2: the cells, near to far.
         let mut mailbox = Mailbox::new();
         walk(&self.lattice, ray, interval, |cell| {
+            observe(cell, None);
             for &index in self.cell_objects(cell.index) {
                 // Step 3: an object met in an earlier cell is not tested
                 // again (its answer cannot change: the interval only
@@ -56,6 +62,7 @@ impl Accelerator for Grid {
                 if self.mailboxing && mailbox.seen(index) {
                     continue;
                 }
+                observe(cell, Some(index));
                 test(index, &mut interval);
             }
             // Step 4: stop once the closest hit lies in this cell.
@@ -68,6 +75,18 @@ impl Accelerator for Grid {
         closest
     }
     // ANCHOR_END: closest_hit
+}
+
+impl Accelerator for Grid {
+    /// The closest hit ([`Grid::closest_hit_observed`], unobserved).
+    fn closest_hit(
+        &self,
+        objects: &[Object],
+        ray: &Ray,
+        interval: Interval,
+    ) -> Option<(usize, Hit)> {
+        self.closest_hit_observed(objects, ray, interval, &mut |_, _| {})
+    }
 
     /// Does anything meet the ray? Any hit at all ends the walk: a shadow
     /// ray needs no order.

@@ -46,7 +46,7 @@ pub fn rule_cells(objects: usize) -> usize {
 pub fn cells_for(bounds: &Aabb, longest: usize) -> [usize; 3] {
     let extent = bounds.max - bounds.min;
     let widest = extent.max_element();
-    if !(widest > 0.0) || !widest.is_finite() {
+    if widest.is_nan() || widest <= 0.0 || widest.is_infinite() {
         return [1, 1, 1];
     }
     let per_unit = longest.clamp(1, MAX_CELLS) as f64 / widest;

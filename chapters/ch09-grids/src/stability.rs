@@ -81,16 +81,16 @@ pub fn stability_scenes(bunny: &[[DVec3; 3]]) -> Vec<StabilityScene> {
     };
     vec![
         scene(
-            "the bunny, rule",
+            "the bunny",
             bunny.iter().filter_map(triangle).collect(),
             Resolution::Rule,
         ),
         scene(
-            "spheres, big triangles, a plane",
+            "spheres + big triangles + a plane",
             mixed.clone(),
             Resolution::Rule,
         ),
-        scene("the same, one cell", mixed, Resolution::Cells([1, 1, 1])),
+        scene("the same in one cell", mixed, Resolution::Cells([1, 1, 1])),
         scene(
             "10 spheres in 64 cells a side",
             spheres(10, 3),
@@ -162,9 +162,16 @@ pub fn adversarial_rays(
     };
     let axis_of = |r: &mut SplitMix64| (r.next_u64() % 3) as usize;
     let signed_unit = |r: &mut SplitMix64, axis: usize| {
-        let mut d =
-            DVec3::splat(if r.next_u64() % 2 == 0 { 0.0 } else { -0.0 });
-        d[axis] = if r.next_u64() % 2 == 0 { 1.0 } else { -1.0 };
+        let mut d = DVec3::splat(if r.next_u64().is_multiple_of(2) {
+            0.0
+        } else {
+            -0.0
+        });
+        d[axis] = if r.next_u64().is_multiple_of(2) {
+            1.0
+        } else {
+            -1.0
+        };
         d
     };
     let mut case =
@@ -219,7 +226,7 @@ pub fn adversarial_rays(
         case("grazing the box", &mut |r| {
             // in the plane of a face, aimed at a point of that face
             let axis = axis_of(r);
-            let face = if r.next_u64() % 2 == 0 {
+            let face = if r.next_u64().is_multiple_of(2) {
                 b.min[axis]
             } else {
                 b.max[axis]

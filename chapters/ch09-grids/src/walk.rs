@@ -60,9 +60,10 @@ pub fn walk(
         {
             return;
         }
-        // Step 4: stop where the ray leaves the grid or the interval
-        // (written so that a NaN or +∞ t_max stops too).
-        if !(dda.t_max[axis] < dda.t_exit) {
+        // Step 4: stop where the ray leaves the grid or the interval (a
+        // +∞ t_max, a ray parallel to every plane, stops too; so does NaN).
+        let next_plane = dda.t_max[axis];
+        if next_plane >= dda.t_exit || next_plane.is_nan() {
             return;
         }
         // Step 5: step into the neighbour across that plane; stop past
