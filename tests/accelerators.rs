@@ -2,8 +2,8 @@
 //! brute-force list behind a bounding-box test, must give every tracer of
 //! chapters 3–7 exactly what the plain list gives it, on every chapter
 //! scene, without a line of those tracers changed. Chapter 8's bounding
-//! volume hierarchy is handed to them the same way (grids and kd-trees,
-//! chapters 9–10, will be too).
+//! volume hierarchy and chapter 9's grid are handed to them the same way
+//! (the kd-tree of chapter 10 will be too).
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -222,6 +222,45 @@ fn every_tracer_gives_the_same_bytes_on_a_bvh() {
         }
     }
     assert!(compared >= 4 * 5 * 8);
+}
+
+/// Chapter 9's grid behind the same seam: on every chapter scene, every
+/// tracer gives the same image bytes and the same counts through the grid
+/// (the rule's resolution with the mailbox on and off, one cell, and 64
+/// cells along the longest axis) as through the plain list.
+#[test]
+fn every_tracer_gives_the_same_bytes_on_a_grid() {
+    let mut compared = 0;
+    for path in &chapter_scenes() {
+        let (list, _, _) = worlds(path);
+        let expected = every_tracer(&list);
+        let resolutions = [
+            (ch09::Resolution::Rule, true),
+            (ch09::Resolution::Rule, false),
+            (ch09::Resolution::Cells([1, 1, 1]), true),
+            (ch09::Resolution::Longest(64), true),
+        ];
+        for (resolution, mailboxing) in resolutions {
+            let mut grid = ch09::Grid::for_objects(&list.objects, resolution);
+            grid.mailboxing = mailboxing;
+            let actual =
+                every_tracer(&list.clone().with_accelerator(Arc::new(grid)));
+            for ((name, a, a_counts), (_, b, b_counts)) in
+                expected.iter().zip(&actual)
+            {
+                assert_eq!(
+                    a.to_srgb8(),
+                    b.to_srgb8(),
+                    "{name} through a grid ({resolution:?}, mailbox \
+                     {mailboxing}) on {}: the images differ",
+                    path.display()
+                );
+                assert_eq!(a_counts, b_counts, "{name} on {}", path.display());
+                compared += 1;
+            }
+        }
+    }
+    assert!(compared >= 4 * 4 * 10);
 }
 
 /// Each ray a tracer counts is one question to the collection: a primary
