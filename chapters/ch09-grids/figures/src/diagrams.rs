@@ -218,10 +218,7 @@ fn grid_walk() -> Figure {
         let number = visits.iter().position(|w| w.cell == v.cell).unwrap_or(0);
         page.label_sized(
             DVec2::new(b.min.x + 0.05, b.min.y - 0.3),
-            &format!(
-                "cell {} finds the hit, which lies beyond it: walk on",
-                number + 1
-            ),
+            &format!("cell {} finds the hit beyond it: walk on", number + 1),
             Anchor::E,
             14.0,
             palette::VERMILION,
@@ -238,7 +235,7 @@ fn grid_walk() -> Figure {
     );
     page.text_page(
         DVec2::new(14.0, 582.0),
-        "small grey numbers: how many objects the cell lists · orange circles: tested and missed",
+        "small grey numbers: how many objects the cell lists · orange circles: tested and missed · vermilion: the hit",
         Anchor::E,
         15.0,
     );
@@ -263,8 +260,8 @@ fn dda_setup_figure() -> Figure {
     let lattice = flat_lattice(5, 3);
     let ray = Ray::new(DVec3::new(0.35, 0.45, 0.0), DVec3::new(1.0, 0.45, 0.0));
     let d = dda_setup(&lattice, &ray, Interval::FORWARD).expect("inside");
-    let mut page = Page::new(900.0, 520.0)
-        .view(DVec2::new(-0.3, -1.0), DVec2::new(5.3, 3.3));
+    let mut page = Page::new(900.0, 530.0)
+        .view(DVec2::new(-0.3, -1.3), DVec2::new(5.3, 3.3));
     fill_cell(
         &mut page,
         &lattice,
@@ -297,21 +294,25 @@ fn dda_setup_figure() -> Figure {
             first = false;
         }
     }
-    page.text_page(
-        DVec2::new(14.0, 452.0),
-        &format!(
-            "first cell ({}, {}) · t_{{max}} = ({:.2}, {:.2}): the next x and y planes · t_{{delta}} = ({:.2}, {:.2}): one cell, in t",
-            d.cell[0], d.cell[1], d.t_max.x, d.t_max.y, d.t_delta.x, d.t_delta.y
+    let lines = [
+        format!(
+            "first cell ({}, {}) · t_{{max}} = ({:.2}, {:.2}): where the next x and y planes are",
+            d.cell[0], d.cell[1], d.t_max.x, d.t_max.y
         ),
-        Anchor::E,
-        15.0,
-    );
-    page.text_page(
-        DVec2::new(14.0, 480.0),
-        "each step: the smaller t_{max} says which plane comes first; step across it, add that axis's t_{delta}",
-        Anchor::E,
-        15.0,
-    );
+        format!(
+            "t_{{delta}} = ({:.2}, {:.2}): one cell's width and height, in t",
+            d.t_delta.x, d.t_delta.y
+        ),
+        "each step: the smaller t_{max} says which plane comes first; step across it and add that axis's t_{delta}".to_string(),
+    ];
+    for (k, line) in lines.iter().enumerate() {
+        page.text_page(
+            DVec2::new(14.0, 440.0 + 26.0 * k as f64),
+            line,
+            Anchor::E,
+            16.0,
+        );
+    }
     Figure::new(
         "dda-setup",
         "The 3D DDA's setup (exercise 1), drawn in the plane: from the origin the ray meets the next vertical plane at t_max,x (vermilion) and the next horizontal plane at t_max,y (green). Each further crossing of an axis's planes comes t_delta of that axis later, so the walk needs one comparison and one addition per cell (exercise 2): the vermilion and green dots, taken in order of t, are exactly the walls between the cells it visits.",
