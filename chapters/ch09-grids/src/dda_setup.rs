@@ -4,28 +4,7 @@
 //! and how far apart those planes are (`t_delta`).
 use raystep_core::{DVec3, Interval, Ray};
 
-use crate::Lattice;
-
-/// Where a ray's walk through a grid stands: the cell it is in and, per
-/// axis, the `t` of the next plane between cells.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Dda {
-    /// The cell the ray is in.
-    pub cell: [usize; 3],
-    /// Per axis, the step to the next cell: +1, −1, or 0 for a ray
-    /// parallel to that axis's planes.
-    pub step: [i8; 3],
-    /// Per axis, the `t` at which the ray crosses into the next cell
-    /// along that axis (+∞ if it never does).
-    pub t_max: DVec3,
-    /// Per axis, the `t` it takes to cross one whole cell (+∞ if
-    /// parallel): `t_max` grows by this much at each step along the axis.
-    pub t_delta: DVec3,
-    /// Where the ray enters the grid (at least the interval's start).
-    pub t_enter: f64,
-    /// Where it leaves the grid, or the interval ends, if sooner.
-    pub t_exit: f64,
-}
+use crate::{Dda, Lattice};
 
 // ANCHOR: dda_setup
 /// The DDA's start for `ray` within `interval`, or None if the ray

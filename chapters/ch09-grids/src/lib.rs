@@ -31,6 +31,7 @@ pub use triangle_box::triangle_overlaps_box;
 // The walk: the 3D DDA, and the tracer's two questions.
 // ---------------------------------------------------------------------
 
+mod dda;
 mod grid_trace;
 mod mailbox;
 mod mesh_grid;
@@ -42,11 +43,12 @@ mod dda_setup;
 #[cfg_attr(feature = "exercise", path = "../exercise/walk.rs")]
 mod walk;
 
-pub use dda_setup::{Dda, dda_setup};
+pub use dda::{Dda, Visit};
+pub use dda_setup::dda_setup;
 pub use grid_trace::{EXIT_SLACK, hit_in_cell};
 pub use mailbox::{Mailbox, SLOTS};
 pub use mesh_grid::MeshGrid;
-pub use walk::{Visit, walk};
+pub use walk::walk;
 
 pub use raystep_core::{Aabb, DVec3, Hit, Interval, Ray};
 pub use raystep_world::{Accelerator, Object};

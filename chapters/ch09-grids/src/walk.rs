@@ -6,20 +6,7 @@ use std::ops::ControlFlow;
 
 use raystep_core::{Interval, Ray};
 
-use crate::{Lattice, dda_setup};
-
-/// One cell on a ray's walk: which, and the part of the ray inside it.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Visit {
-    /// The cell, `[x, y, z]`.
-    pub cell: [usize; 3],
-    /// Its number in the grid's flat arrays ([`Lattice::index`]).
-    pub index: usize,
-    /// Where the ray enters the cell.
-    pub t_in: f64,
-    /// Where it leaves it (or the walk's interval ends).
-    pub t_out: f64,
-}
+use crate::{Lattice, Visit, dda_setup};
 
 // ANCHOR: walk
 /// Calls `visit` for every cell `ray` passes through within `interval`,

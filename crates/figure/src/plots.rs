@@ -143,3 +143,15 @@ pub fn legend(
     }
     Ok(())
 }
+
+/// The label of row `y` in a chart of named rows, the first name on top
+/// (row `n − 1`) and the last at the bottom (row 0); no label between
+/// rows. For `y_label_formatter(&|y| row_label(&names, *y))`.
+pub fn row_label<S: AsRef<str>>(names: &[S], y: f64) -> String {
+    let n = names.len() as f64;
+    let k = n - 1.0 - y.round();
+    if (y - y.round()).abs() > 1e-6 || k < 0.0 || k >= n {
+        return String::new();
+    }
+    names[k as usize].as_ref().to_string()
+}

@@ -5,7 +5,7 @@
 //! through a hierarchy.
 use raystep_figure::plots::{
     BLUE, GREEN, GREY, ORANGE, label, legend, line_with_dots, log_log,
-    log_range, padded_log_range,
+    log_range, padded_log_range, row_label,
 };
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -262,13 +262,7 @@ pub fn precision_chart() -> Result<Figure, ChartError> {
                 .x_label_formatter(&|x| format!("{x:.0}"))
                 .y_labels(rows.len())
                 .disable_y_mesh()
-                .y_label_formatter(&|y| {
-                    let k = n - 1.0 - y.round();
-                    if (y - y.round()).abs() > 1e-6 || k < 0.0 || k >= n {
-                        return String::new();
-                    }
-                    names[k as usize].clone()
-                })
+                .y_label_formatter(&|y| row_label(&names, *y))
                 .label_style(font(16.0))
                 .axis_desc_style(font(16.0))
                 .light_line_style(WHITE)

@@ -1,6 +1,7 @@
 //! Chapter 8's two charts, drawn from `book/src/figures/ch08/costs.csv` and
 //! `bounding.csv` (written by `raystep measure`): what one ray–primitive
 //! test costs against the sphere's, and what a bound saves.
+use raystep_figure::plots::row_label;
 use raystep_figure::plotters::coord::types::RangedCoordf64;
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -106,13 +107,7 @@ fn named_rows<'a, 'b>(
         .y_labels(names.len())
         .x_labels(0)
         .disable_x_mesh()
-        .y_label_formatter(&|y| {
-            let k = n - 1.0 - y.round();
-            if (y - y.round()).abs() > 1e-6 || k < 0.0 || k >= n {
-                return String::new();
-            }
-            names[k as usize].to_string()
-        })
+        .y_label_formatter(&|y| row_label(names, *y))
         .label_style(font(16.0))
         .axis_desc_style(font(15.0))
         .light_line_style(WHITE)

@@ -3,7 +3,7 @@
 //! and brute force, and mailboxing.
 use raystep_figure::plots::{
     BLUE, GREEN, GREY, ORANGE, legend, line_with_dots, log_log, log_range,
-    number_label,
+    number_label, row_label,
 };
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -138,11 +138,8 @@ fn dot_panel(
         .y_labels(SCENES.len())
         .disable_y_mesh()
         .y_label_formatter(&|y| {
-            let k = n - 1.0 - y.round();
-            if !names || (y - y.round()).abs() > 1e-6 || k < 0.0 || k >= n {
-                return String::new();
-            }
-            SCENES[k as usize].1.to_string()
+            let labels = SCENES.map(|(_, name)| if names { name } else { "" });
+            row_label(&labels, *y)
         })
         .label_style(font(14.0))
         .axis_desc_style(font(15.0))
@@ -207,13 +204,7 @@ pub fn mailbox_chart() -> Result<Figure, ChartError> {
                 .x_label_formatter(&|x| format!("{x:.0}"))
                 .y_labels(rows.len())
                 .disable_y_mesh()
-                .y_label_formatter(&|y| {
-                    let k = n - 1.0 - y.round();
-                    if (y - y.round()).abs() > 1e-6 || k < 0.0 || k >= n {
-                        return String::new();
-                    }
-                    names[k as usize].clone()
-                })
+                .y_label_formatter(&|y| row_label(&names, *y))
                 .label_style(font(15.0))
                 .axis_desc_style(font(15.0))
                 .light_line_style(WHITE)

@@ -8,9 +8,6 @@ pub mod rows;
 
 use raystep_figure::{Chapter, Measurement};
 use raystep_render::csv::to_csv;
-use raystep_render::{Image, RenderOptions};
-use raystep_scene::Scene;
-use raystep_world::Accelerate;
 
 /// What chapter 9 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter = Chapter {
@@ -58,27 +55,7 @@ pub const CHAPTER: Chapter = Chapter {
             },
         },
     ],
-    renderer: Some(render),
+    // chapter 8's shapes traced by chapter 6's tracer, as for chapter 8's
+    // scenes; `--accel grid` hands it this chapter's grid
+    renderer: ch08_figures::CHAPTER.renderer,
 };
-
-/// `raystep render` with chapter 8's primitives, traced by chapter 6's
-/// tracer (reflection, refraction, exact Fresnel), the objects searched by
-/// what `--accel` asks for.
-fn render(
-    scene: &Scene,
-    file: &str,
-    options: &RenderOptions,
-    accelerate: Accelerate,
-) -> Result<Image, String> {
-    let world = ch08::world(scene, file)
-        .map_err(|e| e.to_string())?
-        .accelerated(accelerate);
-    let (image, _) = ch06::render(
-        &world,
-        &ch06::DEFAULT_STOP,
-        ch06::Fresnel::Exact,
-        options,
-    )
-    .map_err(|e| e.to_string())?;
-    Ok(image)
-}
