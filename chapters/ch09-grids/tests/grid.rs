@@ -151,6 +151,23 @@ fn planes_stay_outside() {
     assert_eq!((only.lattice.cells, only.items.len()), ([1, 1, 1], 0));
 }
 
+/// A cell reaches a millionth of its size beyond its box when objects
+/// are listed: a box that stops a rounding error short of a cell is
+/// listed in it, one that stops a thousandth short is not, one that
+/// touches the plane exactly is listed on both sides.
+#[test]
+fn cells_reach_a_rounding_error_beyond_their_box() {
+    let lattice =
+        Lattice::new(Aabb::new(DVec3::ZERO, DVec3::splat(4.0)), [4, 4, 4]);
+    let ending =
+        |x: f64| Aabb::new(DVec3::new(0.2, 0.2, 0.2), DVec3::new(x, 0.8, 0.8));
+    let boxes = [ending(1.0 - 1e-9), ending(1.0 - 1e-3), ending(1.0)];
+    let grid = Grid::build_on(&boxes, lattice);
+    let next = grid.cell_objects(lattice.index([1, 0, 0]));
+    assert_eq!(next, &[0, 2], "the cell beyond x = 1 lists {next:?}");
+    assert_eq!(grid.cell_objects(0), &[0, 1, 2]);
+}
+
 /// A flat scene gets a grid one cell thick; cells stay close to cubes.
 #[test]
 fn flat_and_long_boxes() {
