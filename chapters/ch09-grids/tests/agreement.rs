@@ -104,7 +104,7 @@ fn the_bunny_grid_agrees_and_what_it_costs() {
                     ray,
                     ch09::Interval::FORWARD,
                     &mut counts,
-                    &mut |k| seen.push(k),
+                    |k| seen.push(k),
                 );
                 wrong += usize::from(hit.map(|h| h.t) != *want);
                 let tests = seen.len();

@@ -363,6 +363,8 @@ fn raster_analogy() -> Figure {
         None,
         Some(&Stroke::new(palette::VERMILION).width(2.0)),
     );
+    // its upper edge is the ray the walk on the right follows
+    page.segment(a, b, &Stroke::new(palette::BLUE).width(2.5));
     // right: the walk visits every cell the ray passes through
     let shift = DVec2::new(w as f64 + gap, 0.0);
     let mut visited = 0;
@@ -411,7 +413,7 @@ fn raster_analogy() -> Figure {
     );
     Figure::new(
         "dda-raster",
-        "The grid walk beside chapter 7's rasterizer, on the same 12 × 8 grid. Left: the rasterizer tests the centre of every pixel in a triangle's box (grey) and draws those it covers (orange, chapter 7's `covers`); from one pixel to the next each edge function grows by a constant. Right: the DDA walks along the triangle's upper edge as a ray, from cell to cell, adding a constant t_delta at each step; it visits every cell the ray passes through, not only those whose centre lies on one side. Both break ties the same way: a point on the line between two cells belongs to the cell above or to the right, as chapter 2's rule gives a pixel centre on a shared edge to exactly one triangle.",
+        "The grid walk beside chapter 7's rasterizer, on the same 12 × 8 grid. Left: the rasterizer tests the centre of every pixel in a triangle's box (grey) and draws those it covers (orange, chapter 7's `covers`); from one pixel to the next each edge function grows by a constant. Right: the DDA walks along the triangle's upper edge (blue) as a ray, from cell to cell, adding a constant t_delta at each step; it visits every cell the ray passes through, not only those whose centre lies on one side. Both break ties the same way: a point on the line between two cells belongs to the cell above or to the right, as chapter 2's rule gives a pixel centre on a shared edge to exactly one triangle.",
         page,
     )
 }

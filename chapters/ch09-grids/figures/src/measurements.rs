@@ -355,7 +355,7 @@ pub fn measure_mailbox(
                         ray,
                         Interval::FORWARD,
                         &mut counts,
-                        &mut |k| seen.push(k),
+                        |k| seen.push(k),
                     );
                     let asked = seen.len();
                     seen.sort_unstable();
@@ -410,7 +410,6 @@ pub fn measure_stability(
     _repeats: usize,
     step: &mut dyn FnMut(),
 ) -> Result<Vec<StabilityRow>, String> {
-    use raystep_bench::on_threads as pool;
     let bunny = bunny()?;
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     let mut rows = Vec::new();
@@ -420,7 +419,7 @@ pub fn measure_stability(
             let mut wrong = [0u64; 2];
             for (k, mailboxing) in [true, false].into_iter().enumerate() {
                 grid.mailboxing = mailboxing;
-                wrong[k] = pool(threads, || {
+                wrong[k] = on_threads(threads, || {
                     count_parallel(&grid, &scene.objects, &case.rays)
                 })
                 .map_err(|e| e.to_string())?;
