@@ -1,0 +1,99 @@
+//! # Chapter 10 — kd-trees
+//!
+//! What the book calls axis-aligned BSP trees: use planes to split space
+//! into pieces. Each interior node cuts its piece of space in two by a
+//! plane perpendicular to x, y or z; each leaf lists the objects that
+//! reach into its piece. The surface area heuristic chooses where to cut;
+//! a ray walks the pieces it passes through front to back, and the first
+//! piece holding a hit ends the walk. Then the lecture's closing
+//! question: which structure does a scene need?
+//!
+//! Student mode: with the feature `exercise` the modules marked below are
+//! replaced by the stubs in `exercise/`.
+
+// ---------------------------------------------------------------------
+// The tree: planes chosen by the surface area heuristic.
+// ---------------------------------------------------------------------
+
+mod build_events;
+mod build_sorting;
+mod clip;
+mod costs;
+mod events;
+mod kdtree;
+mod median;
+
+// Exercise 1: the SAH cost of one split plane.
+#[cfg_attr(feature = "exercise", path = "../exercise/split_cost.rs")]
+mod split_cost;
+
+pub use clip::clipped_bounds;
+pub use costs::KdCosts;
+pub use events::{
+    Event, EventKind, Plane, Side, event_order, push_events, side, sweep,
+};
+pub use kdtree::{
+    Clip, KdBuilder, KdNode, KdStats, KdTree, MAX_DEPTH, MEDIAN_LEAF,
+    max_depth,
+};
+pub use split_cost::split_cost;
+
+// ---------------------------------------------------------------------
+// The walk: front to back, with a stack.
+// ---------------------------------------------------------------------
+
+mod kd_trace;
+mod mesh_kd;
+mod step;
+mod walk;
+
+// Exercise 2: one traversal step: which child first, when to push.
+#[cfg_attr(feature = "exercise", path = "../exercise/traversal_step.rs")]
+mod traversal_step;
+
+pub use mesh_kd::MeshKd;
+pub use step::{Split, Step};
+pub use traversal_step::traversal_step;
+pub use walk::{KdVisit, kd_walk};
+
+pub use raystep_core::{Aabb, DVec3, Hit, Interval, Ray};
+pub use raystep_world::{Accelerator, Object};
+
+// ---------------------------------------------------------------------
+// Stability: the rays and scenes where a kd-tree can go wrong.
+// ---------------------------------------------------------------------
+
+mod stability;
+
+pub use stability::{
+    Answers, KdRayCase, KdScene, answers, kd_disagreements, kd_rays,
+    kd_scenes,
+};
+
+#[cfg(test)]
+mod tests {
+    use raystep_core::{Aabb, DVec3};
+
+    use crate::KdCosts;
+
+    /// The builders' private copy of exercise 1 computes the same, bit
+    /// for bit.
+    #[test]
+    #[cfg(not(feature = "exercise"))]
+    fn the_builders_copy_agrees() {
+        let b = |a: f64, c: f64| Aabb::new(DVec3::splat(a), DVec3::splat(c));
+        for costs in [KdCosts::PBRT_V3, KdCosts::WALD_HAVRAN] {
+            for (node, plane) in [(b(0.0, 2.0), 0.5), (b(0.0, 0.0), 0.0), (b(-3.0, 7.0), 6.9)] {
+                for (n, m) in [(0, 3), (1, 1), (5, 2), (4, 0)] {
+                    for axis in 0..3 {
+                        assert_eq!(
+                            crate::split_cost(&node, axis, plane, n, m, &costs).to_bits(),
+                            crate::events::cost_reference(&node, axis, plane, n, m, &costs)
+                                .to_bits()
+                        );
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,43 @@
+//! The median tree: every node cut in the middle of its longest side,
+//! the objects not looked at (beside the SAH, what a plane costs when
+//! nobody weighs it).
+use raystep_core::Aabb;
+
+use crate::MEDIAN_LEAF;
+use crate::events::{Plane, Side, children, side};
+use crate::kdtree::{Input, Output};
+
+/// Builds the tree over `objects` in box `node`.
+pub(crate) fn build(input: &Input, objects: &[u32], node: Aabb, out: &mut Output) {
+    subtree(input, objects, node, 0, out);
+}
+
+fn subtree(input: &Input, objects: &[u32], node: Aabb, depth: usize, out: &mut Output) {
+    // Step 1: the middle of the longest side.
+    let axis = (node.max - node.min).max_position();
+    let position = 0.5 * (node.min[axis] + node.max[axis]);
+    let inside = node.min[axis] < position && position < node.max[axis];
+    // Step 2: a leaf when few objects are left, or the tree is deep.
+    if objects.len() <= MEDIAN_LEAF || depth >= input.max_depth || !inside {
+        out.leaf(objects.iter().copied());
+        return;
+    }
+    // Step 3: each object to its side (flat ones in the plane below).
+    let plane = Plane { axis, position, planar_below: true, cost: 0.0, counts: (0, 0) };
+    let (mut below, mut above) = (Vec::new(), Vec::new());
+    for &i in objects {
+        match side(&input.bounds_in(i, &node), &plane) {
+            Side::Below => below.push(i),
+            Side::Above => above.push(i),
+            Side::Both => {
+                below.push(i);
+                above.push(i);
+            }
+        }
+    }
+    let (below_box, above_box) = children(&node, axis, position);
+    let me = out.split(axis, position);
+    subtree(input, &below, below_box, depth + 1, out);
+    out.above(me);
+    subtree(input, &above, above_box, depth + 1, out);
+}
