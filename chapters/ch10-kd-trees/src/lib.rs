@@ -60,6 +60,14 @@ pub use raystep_core::{Aabb, DVec3, Hit, Interval, Ray};
 pub use raystep_world::{Accelerator, Object};
 
 // ---------------------------------------------------------------------
+// Which structure a scene needs.
+// ---------------------------------------------------------------------
+
+mod auto;
+
+pub use auto::{FEW, Structure, auto, choose};
+
+// ---------------------------------------------------------------------
 // Stability: the rays and scenes where a kd-tree can go wrong.
 // ---------------------------------------------------------------------
 

@@ -1,15 +1,31 @@
 mod common;
 use ch10::*;
+use std::time::Instant;
 #[test]
 fn debug() {
     let bunny = common::bunny();
-    let scene = kd_scenes(&bunny).remove(0);
-    let sah = KdTree::for_objects(&scene.objects, KdBuilder::SahEvents, KdCosts::PBRT_V3);
-    let ray = Ray::new(DVec3::new(0.7118726610103104, 5.774684906005859, -17.07483096016926), DVec3::new(-3.8637456272500845, 0.0, 20.4495890609172));
-    let (k, hit) = ch03::BruteForce.closest_hit(&scene.objects, &ray, Interval::FORWARD).unwrap();
-    println!("brute hit obj {k} t {}", hit.t);
-    let leaves: Vec<_> = sah.nodes.iter().enumerate().filter_map(|(i, n)| match n { KdNode::Leaf{first,count} => sah.leaf_objects(*first,*count).contains(&(k as u32)).then_some(i), _ => None}).collect();
-    println!("leaves holding it: {leaves:?}");
-    kd_walk(&sah, &ray, Interval::FORWARD, |v| { println!("visit {} [{}, {}] leaf {:?}", v.node, v.t_min, v.t_max, v.objects.map(|o| o.len())); f64::INFINITY });
-    println!("any {}", sah.any_hit(&scene.objects, &ray, Interval::FORWARD));
+    let big = raystep_scene::Mesh::load_obj(std::path::Path::new("/work/shared/meshes/bunny-235k.obj")).unwrap();
+    let big: Vec<[DVec3;3]> = (0..big.triangles.len()).map(|k| big.triangle(k)).collect();
+    for (name, tris) in [("bunny", &bunny), ("235k", &big), ("uniform", &ch09::uniform_triangles(100000, 9))] {
+        let bounds = Aabb::around(tris.iter().flatten().copied());
+        let cam: Vec<ch08::Ray32> = ch08::camera_rays(ch08::BoundingSphere::around_box(&bounds), 256).iter().map(ch08::Ray32::rounded).collect();
+        let inc: Vec<ch08::Ray32> = ch08::incoherent_rays(bounds, 65536, 3).iter().map(ch08::Ray32::rounded).collect();
+        for costs in [KdCosts::PBRT_V3, KdCosts::WALD_HAVRAN, KdCosts{traversal:1.0, intersection: 1.5, empty_bonus: 0.5}, KdCosts{traversal:1.0, intersection: 4.0, empty_bonus: 0.5}, KdCosts{traversal:1.0, intersection: 20.0, empty_bonus: 0.5}] {
+          for (builder, clip) in [(KdBuilder::SahEvents, Clip::Boxes), (KdBuilder::SahEvents, Clip::Triangles), (KdBuilder::SahSorting, Clip::Boxes)] {
+            let t0 = Instant::now();
+            let kd = MeshKd::new(tris, builder, costs, clip);
+            let build = t0.elapsed().as_secs_f64()*1e3;
+            let st = kd.tree.stats(&costs);
+            let mut line = format!("{name} {} {:?} {:?}: build {build:.0} ms, nodes {} depth {} entries {} sah {:.1}", costs.name(), builder, clip, st.nodes, st.depth, st.entries, st.sah_cost);
+            for rays in [&cam, &inc] {
+                let mut c = ch08::TraceCounts::default();
+                let t0 = Instant::now();
+                for r in rays.iter() { kd.closest_hit(r, Interval::FORWARD, &mut c); }
+                let ns = t0.elapsed().as_secs_f64()*1e9 / rays.len() as f64;
+                line += &format!(" | {ns:.0} ns, {:.1} nodes {:.1} tris", c.nodes as f64/rays.len() as f64, c.triangles as f64 / rays.len() as f64);
+            }
+            println!("{line}");
+          }
+        }
+    }
 }
