@@ -2,8 +2,8 @@
 //! brute-force list behind a bounding-box test, must give every tracer of
 //! chapters 3–7 exactly what the plain list gives it, on every chapter
 //! scene, without a line of those tracers changed. Chapter 8's bounding
-//! volume hierarchy and chapter 9's grid are handed to them the same way
-//! (the kd-tree of chapter 10 will be too).
+//! volume hierarchy, chapter 9's grid and chapter 10's kd-tree (and its
+//! rule for choosing a structure) are handed to them the same way.
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -261,6 +261,61 @@ fn every_tracer_gives_the_same_bytes_on_a_grid() {
         }
     }
     assert!(compared >= 4 * 4 * 10);
+}
+
+/// Chapter 10's kd-tree behind the same seam: on every chapter scene,
+/// every tracer gives the same image bytes and the same counts through
+/// the tree (SAH from events with the mailbox on and off, the median
+/// split, SAH by sorting under pbrt's costs) and through the rule's
+/// choice as through the plain list.
+#[test]
+fn every_tracer_gives_the_same_bytes_on_a_kd_tree() {
+    use ch10::{KdBuilder, KdCosts, KdTree};
+    let trees = [
+        (KdBuilder::SahEvents, KdCosts::CHOSEN, true),
+        (KdBuilder::SahEvents, KdCosts::CHOSEN, false),
+        (KdBuilder::Median, KdCosts::CHOSEN, true),
+        (KdBuilder::SahSorting, KdCosts::PBRT_V3, true),
+    ];
+    let mut compared = 0;
+    for path in &chapter_scenes() {
+        let (list, _, _) = worlds(path);
+        let expected = every_tracer(&list);
+        let mut accelerators: Vec<(String, Arc<dyn Accelerator>)> = trees
+            .iter()
+            .map(|&(builder, costs, mailboxing)| {
+                let mut tree =
+                    KdTree::for_objects(&list.objects, builder, costs);
+                tree.mailboxing = mailboxing;
+                let name = format!(
+                    "a kd-tree ({}, {}, mailbox {mailboxing})",
+                    builder.name(),
+                    costs.name()
+                );
+                (name, Arc::new(tree) as Arc<dyn Accelerator>)
+            })
+            .collect();
+        let boxes: Vec<Aabb> =
+            list.objects.iter().map(|o| o.shape.bounds()).collect();
+        let rule = format!("the rule's {}", ch10::choose(&boxes).name());
+        accelerators.push((rule, ch10::auto(&list.objects)));
+        for (accelerator, built) in accelerators {
+            let actual = every_tracer(&list.clone().with_accelerator(built));
+            for ((name, a, a_counts), (_, b, b_counts)) in
+                expected.iter().zip(&actual)
+            {
+                assert_eq!(
+                    a.to_srgb8(),
+                    b.to_srgb8(),
+                    "{name} through {accelerator} on {}: the images differ",
+                    path.display()
+                );
+                assert_eq!(a_counts, b_counts, "{name} on {}", path.display());
+                compared += 1;
+            }
+        }
+    }
+    assert!(compared >= 4 * 5 * 10);
 }
 
 /// Each ray a tracer counts is one question to the collection: a primary

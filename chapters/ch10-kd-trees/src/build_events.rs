@@ -5,12 +5,19 @@
 //! sort, then merged in. Each level costs O(N): O(N log N) in all.
 use raystep_core::Aabb;
 
-use crate::events::{EventKind, Plane, Side, children, push_events, sweep, worth_splitting};
+use crate::events::{
+    EventKind, Plane, Side, children, push_events, sweep, worth_splitting,
+};
 use crate::kdtree::{Input, Output};
 use crate::{Event, event_order};
 
 /// Builds the tree over `objects` in box `node`.
-pub(crate) fn build(input: &Input, objects: &[u32], node: Aabb, out: &mut Output) {
+pub(crate) fn build(
+    input: &Input,
+    objects: &[u32],
+    node: Aabb,
+    out: &mut Output,
+) {
     // Step 1: every object's events, sorted once.
     let events = [0, 1, 2].map(|axis| {
         let mut events = Vec::with_capacity(2 * objects.len());
@@ -26,7 +33,10 @@ pub(crate) fn build(input: &Input, objects: &[u32], node: Aabb, out: &mut Output
 
 /// The objects of a node: each has one start or flat event per axis.
 fn objects_of(events: &[Event]) -> impl Iterator<Item = u32> + '_ {
-    events.iter().filter(|e| e.kind != EventKind::End).map(|e| e.object)
+    events
+        .iter()
+        .filter(|e| e.kind != EventKind::End)
+        .map(|e| e.object)
 }
 
 fn subtree(
@@ -45,7 +55,8 @@ fn subtree(
             sweep(events, axis, count, &node, &input.costs, &mut best);
         }
     }
-    let Some(plane) = best.filter(|p| worth_splitting(p, count, &input.costs)) else {
+    let Some(plane) = best.filter(|p| worth_splitting(p, count, &input.costs))
+    else {
         out.leaf(objects_of(&events[0]));
         return;
     };
@@ -80,7 +91,8 @@ fn subtree(
         above[axis] = merge(a, &new_above[axis]);
     }
     drop(events);
-    let (n_below, n_above) = (objects_of(&below[0]).count(), objects_of(&above[0]).count());
+    let (n_below, n_above) =
+        (objects_of(&below[0]).count(), objects_of(&above[0]).count());
     let me = out.split(plane.axis, plane.position);
     subtree(input, below, n_below, below_box, depth + 1, sides, out);
     out.above(me);
@@ -101,7 +113,9 @@ fn classify(events: &[Event], plane: &Plane, sides: &mut [Side]) -> Vec<u32> {
             EventKind::End if e.position <= p => *side = Side::Below,
             EventKind::Start if e.position >= p => *side = Side::Above,
             EventKind::Planar => {
-                *side = if e.position < p || (e.position == p && plane.planar_below) {
+                *side = if e.position < p
+                    || (e.position == p && plane.planar_below)
+                {
                     Side::Below
                 } else {
                     Side::Above
@@ -112,7 +126,9 @@ fn classify(events: &[Event], plane: &Plane, sides: &mut [Side]) -> Vec<u32> {
     }
     events
         .iter()
-        .filter(|e| e.kind == EventKind::Start && sides[e.object as usize] == Side::Both)
+        .filter(|e| {
+            e.kind == EventKind::Start && sides[e.object as usize] == Side::Both
+        })
         .map(|e| e.object)
         .collect()
 }

@@ -3,18 +3,32 @@
 //! level: O(N log² N) in all.
 use raystep_core::Aabb;
 
-use crate::events::{Side, children, push_events, side, sweep, worth_splitting};
+use crate::events::{
+    Side, children, push_events, side, sweep, worth_splitting,
+};
 use crate::kdtree::{Input, Output};
-use crate::{event_order, Event};
+use crate::{Event, event_order};
 
 /// Builds the subtree over `objects` in box `node` at depth 0.
-pub(crate) fn build(input: &Input, objects: &[u32], node: Aabb, out: &mut Output) {
+pub(crate) fn build(
+    input: &Input,
+    objects: &[u32],
+    node: Aabb,
+    out: &mut Output,
+) {
     subtree(input, objects, node, 0, out);
 }
 
-fn subtree(input: &Input, objects: &[u32], node: Aabb, depth: usize, out: &mut Output) {
+fn subtree(
+    input: &Input,
+    objects: &[u32],
+    node: Aabb,
+    depth: usize,
+    out: &mut Output,
+) {
     // Step 1: every object's box in this node.
-    let boxes: Vec<Aabb> = objects.iter().map(|&i| input.bounds_in(i, &node)).collect();
+    let boxes: Vec<Aabb> =
+        objects.iter().map(|&i| input.bounds_in(i, &node)).collect();
     // Step 2: the cheapest plane on each axis, from freshly sorted events.
     let mut best = None;
     if !objects.is_empty() && depth < input.max_depth {
@@ -28,7 +42,9 @@ fn subtree(input: &Input, objects: &[u32], node: Aabb, depth: usize, out: &mut O
         }
     }
     // Step 3: a leaf, unless the plane pays.
-    let Some(plane) = best.filter(|p| worth_splitting(p, objects.len(), &input.costs)) else {
+    let Some(plane) =
+        best.filter(|p| worth_splitting(p, objects.len(), &input.costs))
+    else {
         out.leaf(objects.iter().copied());
         return;
     };

@@ -21,7 +21,10 @@ pub fn clipped_bounds(triangle: &[DVec3; 3], node: &Aabb) -> Option<Aabb> {
     let size = (node.max - node.min).max_element();
     let pad = DVec3::splat(1e-9 * size)
         + b.min.abs().max(b.max.abs()) * (4.0 * f64::EPSILON);
-    Some(Aabb { min: b.min - pad, max: b.max + pad })
+    Some(Aabb {
+        min: b.min - pad,
+        max: b.max + pad,
+    })
 }
 
 /// The part of `polygon` where `sign · (x[axis] − plane) ≥ 0`.

@@ -41,13 +41,30 @@ pub fn event_order(a: &Event, b: &Event) -> Ordering {
 }
 
 /// Object `object`'s events on `axis`, for its box `b` in the node.
-pub fn push_events(events: &mut Vec<Event>, object: u32, b: &Aabb, axis: usize) {
+pub fn push_events(
+    events: &mut Vec<Event>,
+    object: u32,
+    b: &Aabb,
+    axis: usize,
+) {
     let (min, max) = (b.min[axis], b.max[axis]);
     if min == max {
-        events.push(Event { position: min, kind: EventKind::Planar, object });
+        events.push(Event {
+            position: min,
+            kind: EventKind::Planar,
+            object,
+        });
     } else {
-        events.push(Event { position: min, kind: EventKind::Start, object });
-        events.push(Event { position: max, kind: EventKind::End, object });
+        events.push(Event {
+            position: min,
+            kind: EventKind::Start,
+            object,
+        });
+        events.push(Event {
+            position: max,
+            kind: EventKind::End,
+            object,
+        });
     }
 }
 
@@ -123,12 +140,21 @@ pub fn sweep(
         above -= ends + planar;
         // Step 4: the plane's cost, flat objects on either side.
         if node.min[axis] < position && position < node.max[axis] {
-            for (planar_below, counts) in
-                [(true, (below + planar, above)), (false, (below, above + planar))]
-            {
-                let cost = cost_reference(node, axis, position, counts.0, counts.1, costs);
+            for (planar_below, counts) in [
+                (true, (below + planar, above)),
+                (false, (below, above + planar)),
+            ] {
+                let cost = cost_reference(
+                    node, axis, position, counts.0, counts.1, costs,
+                );
                 if best.is_none_or(|b| cost < b.cost) {
-                    *best = Some(Plane { axis, position, planar_below, cost, counts });
+                    *best = Some(Plane {
+                        axis,
+                        position,
+                        planar_below,
+                        cost,
+                        counts,
+                    });
                 }
             }
         }
@@ -155,7 +181,11 @@ pub fn side(b: &Aabb, plane: &Plane) -> Side {
     let (min, max) = (b.min[plane.axis], b.max[plane.axis]);
     let p = plane.position;
     if min == p && max == p {
-        if plane.planar_below { Side::Below } else { Side::Above }
+        if plane.planar_below {
+            Side::Below
+        } else {
+            Side::Above
+        }
     } else if max <= p {
         Side::Below
     } else if min >= p {

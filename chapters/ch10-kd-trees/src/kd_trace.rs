@@ -24,7 +24,9 @@ impl KdTree {
         let mut interval = interval;
         let mut closest = None;
         let mut test = |index: u32, interval: &mut Interval| {
-            if let Some(hit) = objects[index as usize].shape.intersect(ray, *interval) {
+            if let Some(hit) =
+                objects[index as usize].shape.intersect(ray, *interval)
+            {
                 *interval = interval.with_max(hit.t);
                 closest = Some((index as usize, hit));
             }
@@ -68,9 +70,17 @@ impl Accelerator for KdTree {
     }
 
     /// Does anything meet the ray? The first blocker ends the walk.
-    fn any_hit(&self, objects: &[Object], ray: &Ray, interval: Interval) -> bool {
+    fn any_hit(
+        &self,
+        objects: &[Object],
+        ray: &Ray,
+        interval: Interval,
+    ) -> bool {
         let hits = |index: u32| {
-            objects[index as usize].shape.intersect(ray, interval).is_some()
+            objects[index as usize]
+                .shape
+                .intersect(ray, interval)
+                .is_some()
         };
         if self.unbounded.iter().any(|&index| hits(index)) {
             return true;
@@ -83,7 +93,11 @@ impl Accelerator for KdTree {
                     !(self.mailboxing && mailbox.seen(index)) && hits(index)
                 })
             });
-            if blocked { f64::NEG_INFINITY } else { interval.max }
+            if blocked {
+                f64::NEG_INFINITY
+            } else {
+                interval.max
+            }
         });
         blocked
     }

@@ -129,8 +129,10 @@ impl Input<'_> {
     pub fn bounds_in(&self, i: u32, node: &Aabb) -> Aabb {
         let cut = intersection(&self.boxes[i as usize], node);
         match self.triangles {
-            Some(triangles) => crate::clipped_bounds(&triangles[i as usize], node)
-                .map_or(cut, |clipped| intersection(&clipped, &cut)),
+            Some(triangles) => {
+                crate::clipped_bounds(&triangles[i as usize], node)
+                    .map_or(cut, |clipped| intersection(&clipped, &cut))
+            }
             None => cut,
         }
     }
@@ -260,7 +262,11 @@ impl KdTree {
         let root = self.bounds.surface_area();
         let boxes = self.node_boxes();
         let chance = |b: &Aabb| {
-            if root > 0.0 { b.surface_area() / root } else { 1.0 }
+            if root > 0.0 {
+                b.surface_area() / root
+            } else {
+                1.0
+            }
         };
         self.nodes
             .iter()
@@ -276,7 +282,10 @@ impl KdTree {
 
     /// Its nodes, leaves, entries and bytes; its SAH cost under `costs`.
     pub fn stats(&self, costs: &KdCosts) -> KdStats {
-        let leaves = self.nodes.iter().filter(|n| matches!(n, KdNode::Leaf { .. }));
+        let leaves = self
+            .nodes
+            .iter()
+            .filter(|n| matches!(n, KdNode::Leaf { .. }));
         KdStats {
             nodes: self.nodes.len(),
             leaves: leaves.clone().count(),

@@ -33,8 +33,7 @@ pub use events::{
     Event, EventKind, Plane, Side, event_order, push_events, side, sweep,
 };
 pub use kdtree::{
-    Clip, KdBuilder, KdNode, KdStats, KdTree, MAX_DEPTH, MEDIAN_LEAF,
-    max_depth,
+    Clip, KdBuilder, KdNode, KdStats, KdTree, MAX_DEPTH, MEDIAN_LEAF, max_depth,
 };
 pub use split_cost::split_cost;
 
@@ -74,8 +73,7 @@ pub use auto::{FEW, Structure, auto, choose};
 mod stability;
 
 pub use stability::{
-    Answers, KdRayCase, KdScene, answers, kd_disagreements, kd_rays,
-    kd_scenes,
+    Answers, KdRayCase, KdScene, answers, kd_disagreements, kd_rays, kd_scenes,
 };
 
 #[cfg(test)]
@@ -91,13 +89,18 @@ mod tests {
     fn the_builders_copy_agrees() {
         let b = |a: f64, c: f64| Aabb::new(DVec3::splat(a), DVec3::splat(c));
         for costs in [KdCosts::PBRT_V3, KdCosts::WALD_HAVRAN] {
-            for (node, plane) in [(b(0.0, 2.0), 0.5), (b(0.0, 0.0), 0.0), (b(-3.0, 7.0), 6.9)] {
+            for (node, plane) in
+                [(b(0.0, 2.0), 0.5), (b(0.0, 0.0), 0.0), (b(-3.0, 7.0), 6.9)]
+            {
                 for (n, m) in [(0, 3), (1, 1), (5, 2), (4, 0)] {
                     for axis in 0..3 {
                         assert_eq!(
-                            crate::split_cost(&node, axis, plane, n, m, &costs).to_bits(),
-                            crate::events::cost_reference(&node, axis, plane, n, m, &costs)
-                                .to_bits()
+                            crate::split_cost(&node, axis, plane, n, m, &costs)
+                                .to_bits(),
+                            crate::events::cost_reference(
+                                &node, axis, plane, n, m, &costs
+                            )
+                            .to_bits()
                         );
                     }
                 }

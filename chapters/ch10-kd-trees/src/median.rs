@@ -8,11 +8,22 @@ use crate::events::{Plane, Side, children, side};
 use crate::kdtree::{Input, Output};
 
 /// Builds the tree over `objects` in box `node`.
-pub(crate) fn build(input: &Input, objects: &[u32], node: Aabb, out: &mut Output) {
+pub(crate) fn build(
+    input: &Input,
+    objects: &[u32],
+    node: Aabb,
+    out: &mut Output,
+) {
     subtree(input, objects, node, 0, out);
 }
 
-fn subtree(input: &Input, objects: &[u32], node: Aabb, depth: usize, out: &mut Output) {
+fn subtree(
+    input: &Input,
+    objects: &[u32],
+    node: Aabb,
+    depth: usize,
+    out: &mut Output,
+) {
     // Step 1: the middle of the longest side.
     let axis = (node.max - node.min).max_position();
     let position = 0.5 * (node.min[axis] + node.max[axis]);
@@ -23,7 +34,13 @@ fn subtree(input: &Input, objects: &[u32], node: Aabb, depth: usize, out: &mut O
         return;
     }
     // Step 3: each object to its side (flat ones in the plane below).
-    let plane = Plane { axis, position, planar_below: true, cost: 0.0, counts: (0, 0) };
+    let plane = Plane {
+        axis,
+        position,
+        planar_below: true,
+        cost: 0.0,
+        counts: (0, 0),
+    };
     let (mut below, mut above) = (Vec::new(), Vec::new());
     for &i in objects {
         match side(&input.bounds_in(i, &node), &plane) {

@@ -50,13 +50,16 @@ impl MeshKd {
         let prepared = PreparedRay::new(ray);
         let mut interval = interval;
         let mut closest = None;
-        let mut test = |k: u32, interval: &mut Interval, counts: &mut TraceCounts| {
-            counts.triangles += 1;
-            if let Some(t) = prepared.triangle(&self.triangles[k as usize], *interval) {
-                *interval = interval.with_max(t);
-                closest = Some(MeshHit { triangle: k, t });
-            }
-        };
+        let mut test =
+            |k: u32, interval: &mut Interval, counts: &mut TraceCounts| {
+                counts.triangles += 1;
+                if let Some(t) =
+                    prepared.triangle(&self.triangles[k as usize], *interval)
+                {
+                    *interval = interval.with_max(t);
+                    closest = Some(MeshHit { triangle: k, t });
+                }
+            };
         for &k in &self.tree.unbounded {
             test(k, &mut interval, counts);
         }
@@ -90,7 +93,9 @@ impl MeshKd {
         let prepared = PreparedRay::new(ray);
         let test = |k: u32, counts: &mut TraceCounts| {
             counts.triangles += 1;
-            prepared.triangle(&self.triangles[k as usize], interval).is_some()
+            prepared
+                .triangle(&self.triangles[k as usize], interval)
+                .is_some()
         };
         if self.tree.unbounded.iter().any(|&k| test(k, counts)) {
             return true;
@@ -101,10 +106,15 @@ impl MeshKd {
             counts.nodes += 1;
             blocked = visit.objects.is_some_and(|list| {
                 list.iter().any(|&k| {
-                    !(self.tree.mailboxing && mailbox.seen(k)) && test(k, counts)
+                    !(self.tree.mailboxing && mailbox.seen(k))
+                        && test(k, counts)
                 })
             });
-            if blocked { f64::NEG_INFINITY } else { interval.max }
+            if blocked {
+                f64::NEG_INFINITY
+            } else {
+                interval.max
+            }
         });
         blocked
     }

@@ -50,7 +50,8 @@ pub fn kd_scenes(bunny: &[[DVec3; 3]]) -> Vec<KdScene> {
     for k in 0..120 {
         let axis = k % 3;
         let at = ((k / 3) % 5) as f64 * 0.25 - 0.5;
-        let mut corners = [0, 1, 2].map(|_| DVec3::new(r() - 0.5, r() - 0.5, r() - 0.5));
+        let mut corners =
+            [0, 1, 2].map(|_| DVec3::new(r() - 0.5, r() - 0.5, r() - 0.5));
         for c in &mut corners {
             c[axis] = at;
         }
@@ -80,11 +81,24 @@ pub fn kd_scenes(bunny: &[[DVec3; 3]]) -> Vec<KdScene> {
             if k & 2 == 0 { -1.0 } else { 1.0 },
             if k & 4 == 0 { -1.0 } else { 1.0 },
         );
-        clustered.extend(triangle(&[corner, corner * 0.9, corner * 0.9 + DVec3::X * 0.05]));
+        clustered.extend(triangle(&[
+            corner,
+            corner * 0.9,
+            corner * 0.9 + DVec3::X * 0.05,
+        ]));
     }
-    scenes.push(KdScene { name: "triangles in split planes", objects: planar });
-    scenes.push(KdScene { name: "long triangles across it all", objects: straddling });
-    scenes.push(KdScene { name: "a tight cluster: a deep tree", objects: clustered });
+    scenes.push(KdScene {
+        name: "triangles in split planes",
+        objects: planar,
+    });
+    scenes.push(KdScene {
+        name: "long triangles across it all",
+        objects: straddling,
+    });
+    scenes.push(KdScene {
+        name: "a tight cluster: a deep tree",
+        objects: clustered,
+    });
     scenes
 }
 
@@ -107,7 +121,9 @@ pub fn kd_rays(tree: &KdTree, per_case: usize, seed: u64) -> Vec<KdRayCase> {
         .iter()
         .zip(&boxes)
         .filter_map(|(node, b)| match *node {
-            KdNode::Split { axis, plane, .. } => Some((axis as usize, plane, *b)),
+            KdNode::Split { axis, plane, .. } => {
+                Some((axis as usize, plane, *b))
+            }
             KdNode::Leaf { .. } => None,
         })
         .collect();
@@ -123,22 +139,33 @@ pub fn kd_rays(tree: &KdTree, per_case: usize, seed: u64) -> Vec<KdRayCase> {
         }
     };
     let inside = |r: &mut SplitMix64, b: &Aabb| {
-        b.min + DVec3::new(r.next_f64(), r.next_f64(), r.next_f64()) * (b.max - b.min)
+        b.min
+            + DVec3::new(r.next_f64(), r.next_f64(), r.next_f64())
+                * (b.max - b.min)
     };
     let aimed = |r: &mut SplitMix64, target: DVec3| {
         let origin = centre + far * r.unit_vector();
         Ray::new(origin, target - origin)
     };
     let signed_unit = |r: &mut SplitMix64, axis: usize| {
-        let zero = if r.next_u64().is_multiple_of(2) { 0.0 } else { -0.0 };
+        let zero = if r.next_u64().is_multiple_of(2) {
+            0.0
+        } else {
+            -0.0
+        };
         let mut d = DVec3::splat(zero);
-        d[axis] = if r.next_u64().is_multiple_of(2) { 1.0 } else { -1.0 };
+        d[axis] = if r.next_u64().is_multiple_of(2) {
+            1.0
+        } else {
+            -1.0
+        };
         d
     };
-    let mut case = |name, make: &mut dyn FnMut(&mut SplitMix64) -> Ray| KdRayCase {
-        name,
-        rays: (0..per_case).map(|_| make(&mut random)).collect(),
-    };
+    let mut case =
+        |name, make: &mut dyn FnMut(&mut SplitMix64) -> Ray| KdRayCase {
+            name,
+            rays: (0..per_case).map(|_| make(&mut random)).collect(),
+        };
     vec![
         case("lying in a split plane", &mut |r| {
             let (axis, plane, node) = split(r);
@@ -184,11 +211,17 @@ pub fn kd_rays(tree: &KdTree, per_case: usize, seed: u64) -> Vec<KdRayCase> {
         case("through a node's corner", &mut |r| {
             let (_, _, node) = split(r);
             let corner = DVec3::from_array([0, 1, 2].map(|a| {
-                if r.next_u64().is_multiple_of(2) { node.min[a] } else { node.max[a] }
+                if r.next_u64().is_multiple_of(2) {
+                    node.min[a]
+                } else {
+                    node.max[a]
+                }
             }));
             aimed(r, corner)
         }),
-        case("starting inside", &mut |r| Ray::new(inside(r, &b), r.unit_vector())),
+        case("starting inside", &mut |r| {
+            Ray::new(inside(r, &b), r.unit_vector())
+        }),
         case("from far away", &mut |r| {
             let target = inside(r, &b);
             aimed(r, target)
@@ -201,7 +234,11 @@ pub fn kd_rays(tree: &KdTree, per_case: usize, seed: u64) -> Vec<KdRayCase> {
 pub type Answers = (Option<f64>, bool, bool);
 
 /// What `accelerator` answers for `ray` (brute force: [`BruteForce`]).
-pub fn answers(accelerator: &dyn Accelerator, objects: &[Object], ray: &Ray) -> Answers {
+pub fn answers(
+    accelerator: &dyn Accelerator,
+    objects: &[Object],
+    ray: &Ray,
+) -> Answers {
     let short = Interval::new(0.0, 1.0);
     (
         accelerator

@@ -55,12 +55,32 @@ pub fn kd_walk<'a>(
         match tree.nodes[node as usize] {
             // Step 2: an interior node: near child now, far one later.
             KdNode::Split { axis, plane, above } => {
-                let _ = visit(KdVisit { node, t_min, t_max, objects: None });
+                let _ = visit(KdVisit {
+                    node,
+                    t_min,
+                    t_max,
+                    objects: None,
+                });
                 let axis = axis as usize;
-                let split = Split { plane, below: node + 1, above };
-                match traversal_step(split, ray.origin[axis], inverse[axis], t_min, t_max) {
+                let split = Split {
+                    plane,
+                    below: node + 1,
+                    above,
+                };
+                match traversal_step(
+                    split,
+                    ray.origin[axis],
+                    inverse[axis],
+                    t_min,
+                    t_max,
+                ) {
                     Step::One(child) => node = child,
-                    Step::Both { near, far, near_until, far_from } => {
+                    Step::Both {
+                        near,
+                        far,
+                        near_until,
+                        far_from,
+                    } => {
                         stack[top] = (far, far_from, t_max);
                         top += 1;
                         (node, t_max) = (near, near_until);
@@ -71,7 +91,12 @@ pub fn kd_walk<'a>(
             // Step 3: a leaf: its objects, and how far the ray still matters.
             KdNode::Leaf { first, count } => {
                 let objects = Some(tree.leaf_objects(first, count));
-                bound = visit(KdVisit { node, t_min, t_max, objects });
+                bound = visit(KdVisit {
+                    node,
+                    t_min,
+                    t_max,
+                    objects,
+                });
             }
         }
         // Step 4: the next far child the ray enters before `bound`.

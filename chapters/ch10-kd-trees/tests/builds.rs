@@ -3,7 +3,9 @@
 //! triangles; and the trees of the chapter's scenes, tabled.
 mod common;
 
-use ch08::{BoundingSphere, Builder, MeshBvh, NodePrecision, Ray32, TraceCounts};
+use ch08::{
+    BoundingSphere, Builder, MeshBvh, NodePrecision, Ray32, TraceCounts,
+};
 use ch10::{
     Aabb, Clip, DVec3, Interval, KdBuilder, KdCosts, KdNode, KdTree, MeshKd,
     max_depth,
@@ -11,7 +13,10 @@ use ch10::{
 use raystep_check::{Table, num_places};
 
 fn boxes(triangles: &[[DVec3; 3]]) -> Vec<Aabb> {
-    triangles.iter().map(|t| Aabb::around(t.iter().copied())).collect()
+    triangles
+        .iter()
+        .map(|t| Aabb::around(t.iter().copied()))
+        .collect()
 }
 
 /// The chapter's triangle scenes: the bunny, small uniform triangles, a
@@ -59,7 +64,8 @@ fn no_tree_is_deeper_than_the_rule() {
     }
     // the cluster's median tree goes all the way down
     let (_, cluster) = scenes().remove(3);
-    let tree = KdTree::build(&boxes(&cluster), KdBuilder::Median, KdCosts::CHOSEN);
+    let tree =
+        KdTree::build(&boxes(&cluster), KdBuilder::Median, KdCosts::CHOSEN);
     assert_eq!(tree.stats(&KdCosts::CHOSEN).depth, max_depth(cluster.len()));
 }
 
@@ -76,7 +82,11 @@ fn every_object_is_in_some_leaf_that_meets_it() {
             if let KdNode::Leaf { first, count } = *node {
                 for &i in tree.leaf_objects(first, count) {
                     let o = b[i as usize];
-                    assert!(o.min.cmple(leaf.max).all() && leaf.min.cmple(o.max).all(), "{name}: {i}");
+                    assert!(
+                        o.min.cmple(leaf.max).all()
+                            && leaf.min.cmple(o.max).all(),
+                        "{name}: {i}"
+                    );
                     found[i as usize] = true;
                 }
             }
@@ -88,7 +98,8 @@ fn every_object_is_in_some_leaf_that_meets_it() {
 #[test]
 fn the_trees_of_the_scenes() {
     let mut table = Table::new(&[
-        "scene", "builder", "clip", "nodes", "leaves", "empty", "depth", "entries", "SAH cost",
+        "scene", "builder", "clip", "nodes", "leaves", "empty", "depth",
+        "entries", "SAH cost",
     ]);
     let costs = KdCosts::CHOSEN;
     for (name, triangles) in scenes() {
@@ -97,7 +108,8 @@ fn the_trees_of_the_scenes() {
             (KdBuilder::SahEvents, Clip::Boxes),
             (KdBuilder::SahEvents, Clip::Triangles),
         ] {
-            let s = KdTree::for_triangles(&triangles, builder, costs, clip).stats(&costs);
+            let s = KdTree::for_triangles(&triangles, builder, costs, clip)
+                .stats(&costs);
             table.row(&[
                 name.to_string(),
                 builder.name().to_string(),
@@ -122,10 +134,25 @@ fn the_trees_of_the_scenes() {
 fn perfect_splits_list_fewer_triangles() {
     for (name, triangles) in scenes() {
         let costs = KdCosts::CHOSEN;
-        let boxes = KdTree::for_triangles(&triangles, KdBuilder::SahEvents, costs, Clip::Boxes);
-        let exact = KdTree::for_triangles(&triangles, KdBuilder::SahEvents, costs, Clip::Triangles);
+        let boxes = KdTree::for_triangles(
+            &triangles,
+            KdBuilder::SahEvents,
+            costs,
+            Clip::Boxes,
+        );
+        let exact = KdTree::for_triangles(
+            &triangles,
+            KdBuilder::SahEvents,
+            costs,
+            Clip::Triangles,
+        );
         let (b, e) = (boxes.stats(&costs), exact.stats(&costs));
-        assert!(e.entries < b.entries, "{name}: {} vs {}", e.entries, b.entries);
+        assert!(
+            e.entries < b.entries,
+            "{name}: {} vs {}",
+            e.entries,
+            b.entries
+        );
     }
 }
 
@@ -136,21 +163,29 @@ fn perfect_splits_list_fewer_triangles() {
 fn the_mesh_tree_finds_the_bvhs_hits() {
     let bunny = common::bunny();
     let bounds = Aabb::around(bunny.iter().flatten().copied());
-    let tree = ch08::Bvh::build(&ch08::triangle_boxes(&bunny), Builder::BinnedSah { bins: 16 });
+    let tree = ch08::Bvh::build(
+        &ch08::triangle_boxes(&bunny),
+        Builder::BinnedSah { bins: 16 },
+    );
     let bvh = MeshBvh::new(&bunny, &tree, NodePrecision::Single);
-    let rays: Vec<Ray32> = ch08::camera_rays(BoundingSphere::around_box(&bounds), 48)
-        .iter()
-        .chain(&ch08::incoherent_rays(bounds, 2000, 5))
-        .map(Ray32::rounded)
-        .collect();
+    let rays: Vec<Ray32> =
+        ch08::camera_rays(BoundingSphere::around_box(&bounds), 48)
+            .iter()
+            .chain(&ch08::incoherent_rays(bounds, 2000, 5))
+            .map(Ray32::rounded)
+            .collect();
     for clip in [Clip::Boxes, Clip::Triangles] {
-        let kd = MeshKd::new(&bunny, KdBuilder::SahEvents, KdCosts::CHOSEN, clip);
+        let kd =
+            MeshKd::new(&bunny, KdBuilder::SahEvents, KdCosts::CHOSEN, clip);
         let mut counts = TraceCounts::default();
         let mut wrong = 0;
         for ray in &rays {
             let mut c = TraceCounts::default();
-            let a = kd.closest_hit(ray, Interval::FORWARD, &mut counts).map(|h| h.t);
-            let b = bvh.closest_hit(ray, Interval::FORWARD, &mut c).map(|h| h.t);
+            let a = kd
+                .closest_hit(ray, Interval::FORWARD, &mut counts)
+                .map(|h| h.t);
+            let b =
+                bvh.closest_hit(ray, Interval::FORWARD, &mut c).map(|h| h.t);
             let any = kd.any_hit(ray, Interval::FORWARD, &mut counts);
             wrong += usize::from(a != b || any != b.is_some());
         }

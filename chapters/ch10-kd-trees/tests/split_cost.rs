@@ -1,8 +1,8 @@
 //! Exercise 1: the SAH cost of one split plane, for hand-worked nodes
 //! and both published sets of constants.
 use ch10::{Aabb, DVec3, KdCosts, split_cost};
-use raystep_check::{Table, num_places, seeded};
 use proptest::prelude::*;
+use raystep_check::{Table, num_places, seeded};
 
 /// The box [0, 4] × [0, 2] × [0, 1]: area 2·(8 + 2 + 4) = 28.
 fn node() -> Aabb {
@@ -18,7 +18,16 @@ const UNIT: KdCosts = KdCosts {
 
 #[test]
 fn cost_table() {
-    let mut table = Table::new(&["node", "axis", "plane", "below", "above", "1/1/0.5", "1/80/0.5", "15/20/0.8"]);
+    let mut table = Table::new(&[
+        "node",
+        "axis",
+        "plane",
+        "below",
+        "above",
+        "1/1/0.5",
+        "1/80/0.5",
+        "15/20/0.8",
+    ]);
     let flat = Aabb::new(DVec3::ZERO, DVec3::new(4.0, 0.0, 0.0));
     let cases = [
         ("4×2×1", node(), 0, 1.0, 3, 5),
@@ -29,7 +38,9 @@ fn cost_table() {
         ("a line", flat, 0, 1.0, 2, 3),
     ];
     for (name, b, axis, plane, n_below, n_above) in cases {
-        let cost = |costs| num_places(split_cost(&b, axis, plane, n_below, n_above, &costs), 4);
+        let cost = |costs| {
+            num_places(split_cost(&b, axis, plane, n_below, n_above, &costs), 4)
+        };
         table.row(&[
             name.to_string(),
             ["x", "y", "z"][axis].to_string(),

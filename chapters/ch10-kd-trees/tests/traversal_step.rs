@@ -4,8 +4,8 @@
 mod common;
 
 use ch10::{
-    Accelerator, DVec3, Interval, KdBuilder, KdCosts, KdTree, Ray, Split,
-    Step, kd_disagreements, kd_rays, traversal_step,
+    Accelerator, DVec3, Interval, KdBuilder, KdCosts, KdTree, Ray, Split, Step,
+    kd_disagreements, kd_rays, traversal_step,
 };
 use raystep_check::{Table, num};
 
@@ -23,7 +23,12 @@ fn step(origin: f64, direction: f64, t_min: f64, t_max: f64) -> Step {
 fn shown(s: Step) -> String {
     match s {
         Step::One(child) => format!("only {child}"),
-        Step::Both { near, far, near_until, far_from } => format!(
+        Step::Both {
+            near,
+            far,
+            near_until,
+            far_from,
+        } => format!(
             "{near} to t {}, then {far} from t {}",
             num(near_until),
             num(far_from)
@@ -33,7 +38,8 @@ fn shown(s: Step) -> String {
 
 #[test]
 fn step_table() {
-    let mut table = Table::new(&["ray", "origin x", "dir x", "t range", "visits"]);
+    let mut table =
+        Table::new(&["ray", "origin x", "dir x", "t range", "visits"]);
     let cases = [
         ("crosses up", 0.0, 1.0, 0.0, 10.0),
         ("crosses down", 4.0, -1.0, 0.0, 10.0),
@@ -56,7 +62,11 @@ fn step_table() {
         table.row(&[
             name.to_string(),
             num(o),
-            if d == 0.0 && d.is_sign_negative() { "-0".into() } else { num(d) },
+            if d == 0.0 && d.is_sign_negative() {
+                "-0".into()
+            } else {
+                num(d)
+            },
             format!("{} .. {}", num(t0), num(t1)),
             shown(step(o, d, t0, t1)),
         ]);
@@ -69,9 +79,25 @@ fn step_table() {
 #[test]
 fn near_first_then_far() {
     let up = step(0.0, 1.0, 0.0, 10.0);
-    assert_eq!(up, Step::Both { near: 1, far: 7, near_until: 2.0, far_from: 2.0 });
+    assert_eq!(
+        up,
+        Step::Both {
+            near: 1,
+            far: 7,
+            near_until: 2.0,
+            far_from: 2.0
+        }
+    );
     let down = step(4.0, -0.5, 0.0, 10.0);
-    assert_eq!(down, Step::Both { near: 7, far: 1, near_until: 4.0, far_from: 4.0 });
+    assert_eq!(
+        down,
+        Step::Both {
+            near: 7,
+            far: 1,
+            near_until: 4.0,
+            far_from: 4.0
+        }
+    );
 }
 
 /// A ray lying in the plane is in both children over the whole range.
@@ -80,7 +106,12 @@ fn lying_in_the_plane_visits_both_all_along() {
     for d in [0.0, -0.0] {
         assert_eq!(
             step(2.0, d, 0.5, 3.0),
-            Step::Both { near: 1, far: 7, near_until: 3.0, far_from: 0.5 }
+            Step::Both {
+                near: 1,
+                far: 7,
+                near_until: 3.0,
+                far_from: 0.5
+            }
         );
     }
 }
@@ -101,7 +132,8 @@ fn parallel_off_the_plane_stays_on_its_side() {
 #[test]
 fn the_walk_agrees_with_brute_force_on_the_bunny() {
     let objects: Vec<_> = ch10::kd_scenes(&common::bunny()).remove(0).objects;
-    let tree = KdTree::for_objects(&objects, KdBuilder::SahEvents, KdCosts::CHOSEN);
+    let tree =
+        KdTree::for_objects(&objects, KdBuilder::SahEvents, KdCosts::CHOSEN);
     let trees: [&dyn Accelerator; 1] = [&tree];
     let mut wrong = 0;
     for case in kd_rays(&tree, 30, 7) {

@@ -25,7 +25,7 @@ use raystep_core::{Aabb, DVec3};
 use raystep_scene::Mesh;
 
 pub use error::BenchError;
-pub use methods::{BruteForce, Built, GridSpec, Method, Tracer};
+pub use methods::{BruteForce, Built, GridSpec, KdSpec, Method, Tracer};
 pub use rays::{
     Question, RAY_BYTES, RaySet, incoherent, primary, ray_bytes, read_rays,
     shadow,
@@ -56,6 +56,8 @@ pub struct BenchOptions {
     pub precisions: Vec<NodePrecision>,
     /// Our grids (chapter 9).
     pub grids: Vec<GridSpec>,
+    /// Our kd-trees (chapter 10).
+    pub kd_trees: Vec<KdSpec>,
     /// Run the peers too (needs the `peers` feature).
     pub peers: bool,
     /// Rays per set checked against brute force.
@@ -172,6 +174,9 @@ pub fn run(options: &BenchOptions) -> Result<BenchRun, BenchError> {
     }
     for &spec in &options.grids {
         methods.push(Method::Grid(spec));
+    }
+    for &spec in &options.kd_trees {
+        methods.push(Method::Kd(spec));
     }
     if options.peers {
         methods.extend(Method::peers());

@@ -1,7 +1,7 @@
 //! What a benchmark compares: our hierarchy (a builder and a node
-//! precision), our grid (chapter 9) and, with the `peers` feature, other
-//! libraries' hierarchies — each built on the same triangles and asked
-//! through one trait.
+//! precision), our grid (chapter 9), our kd-tree (chapter 10) and, with
+//! the `peers` feature, other libraries' hierarchies — each built on the
+//! same triangles and asked through one trait.
 use std::time::Instant;
 
 use ch08::{
@@ -9,6 +9,7 @@ use ch08::{
     TreeStats, triangle_boxes,
 };
 use ch09::{Fill, MeshGrid, Resolution};
+use ch10::{Clip, KdBuilder, KdCosts, MeshKd};
 use raystep_core::{DVec3, Interval};
 
 /// A built structure's answers. Hits are `(triangle, t)`, with `t` in
@@ -37,6 +38,8 @@ pub enum Method {
     Ours(Builder, NodePrecision),
     /// Our uniform grid (chapter 9).
     Grid(GridSpec),
+    /// Our kd-tree (chapter 10).
+    Kd(KdSpec),
     /// obvhs's `Bvh2` (PLOC, reinsertion, leaves collapsed by the SAH;
     /// its `medium_build` preset), walked by its own traversal.
     ObvhsBvh2,
@@ -69,6 +72,29 @@ impl GridSpec {
     }
 }
 
+/// How one of our kd-trees is made and walked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct KdSpec {
+    /// How it chooses its planes.
+    pub builder: KdBuilder,
+    /// Which box of a triangle the builder weighs in a node.
+    pub clip: Clip,
+    /// Does a ray skip triangles it has already tested?
+    pub mailbox: bool,
+}
+
+impl KdSpec {
+    /// SAH planes from events, the chapter's costs, clipped by `clip`,
+    /// mailboxing on.
+    pub fn sah(clip: Clip) -> KdSpec {
+        KdSpec {
+            builder: KdBuilder::SahEvents,
+            clip,
+            mailbox: true,
+        }
+    }
+}
+
 /// What building gave: the tracer and what it is made of.
 pub struct Built {
     /// Asks the structure.
@@ -96,6 +122,14 @@ impl Method {
                 let mailbox = if spec.mailbox { "" } else { ", no mailbox" };
                 format!("grid: {cells}, {}{mailbox}", spec.fill.name())
             }
+            Method::Kd(spec) => {
+                let clip = match spec.clip {
+                    Clip::Boxes => "boxes",
+                    Clip::Triangles => "perfect splits",
+                };
+                let mailbox = if spec.mailbox { "" } else { ", no mailbox" };
+                format!("kd-tree: {}, {clip}{mailbox}", spec.builder.name())
+            }
             Method::ObvhsBvh2 => "obvhs Bvh2".into(),
             Method::ObvhsCwBvh => "obvhs CwBvh".into(),
             Method::BvhCrate => "bvh".into(),
@@ -104,7 +138,7 @@ impl Method {
 
     /// Is this one of ours?
     pub fn is_ours(&self) -> bool {
-        matches!(self, Method::Ours(..) | Method::Grid(..))
+        matches!(self, Method::Ours(..) | Method::Grid(..) | Method::Kd(..))
     }
 
     /// The peers this build was compiled with (none without the `peers`
@@ -146,6 +180,23 @@ impl Method {
                     tracer: Box::new(GridTracer(grid)),
                 }
             }
+            Method::Kd(spec) => {
+                let start = Instant::now();
+                let mut kd = MeshKd::new(
+                    triangles,
+                    spec.builder,
+                    KdCosts::CHOSEN,
+                    spec.clip,
+                );
+                kd.tree.mailboxing = spec.mailbox;
+                let build_ms = start.elapsed().as_secs_f64() * 1e3;
+                Built {
+                    build_ms,
+                    bytes: Some(kd.bytes()),
+                    tree: None,
+                    tracer: Box::new(KdTracer(kd)),
+                }
+            }
             #[cfg(feature = "peers")]
             peer => crate::peers::build(peer, triangles),
             #[cfg(not(feature = "peers"))]
@@ -181,6 +232,30 @@ impl Tracer for Ours {
 struct GridTracer(MeshGrid);
 
 impl Tracer for GridTracer {
+    fn closest(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> Option<(u32, f32)> {
+        let hit = self.0.closest_hit(ray, interval, counts)?;
+        Some((hit.triangle, hit.t as f32))
+    }
+
+    fn any(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> bool {
+        self.0.any_hit(ray, interval, counts)
+    }
+}
+
+/// Chapter 10's kd-tree: `nodes` in the counts are the nodes reached.
+struct KdTracer(MeshKd);
+
+impl Tracer for KdTracer {
     fn closest(
         &self,
         ray: &Ray32,

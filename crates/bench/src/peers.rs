@@ -44,7 +44,7 @@ pub fn build(method: Method, triangles: &[[DVec3; 3]]) -> Built {
             let bvh = bvh::bvh::Bvh::build(&mut shapes);
             Box::new(BvhCrate(bvh, shapes, triangles.to_vec()))
         }
-        Method::Ours(..) | Method::Grid(..) => {
+        Method::Ours(..) | Method::Grid(..) | Method::Kd(..) => {
             unreachable!("ours are built in methods.rs")
         }
     };

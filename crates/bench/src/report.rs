@@ -153,8 +153,14 @@ impl BenchReport {
                 set.brute_force_disagreements
             );
         }
+        // the method column as wide as its longest name
+        let width = self
+            .methods
+            .iter()
+            .map(|m| m.method.chars().count())
+            .fold(30, usize::max);
         out += &format!(
-            "\n{:<30} {:>9} {:>9} {:<11} {:>9} {:>7} {:>9} {:>9} {:>8}\n",
+            "\n{:<width$} {:>9} {:>9} {:<11} {:>9} {:>7} {:>9} {:>9} {:>8}\n",
             "method",
             "build ms",
             "MB",
@@ -183,7 +189,7 @@ impl BenchReport {
                     (String::new(), String::new(), String::new())
                 };
                 out += &format!(
-                    "{:<30} {:>9} {:>9} {:<11} {:>9.3} {:>7.2} {:>9} {:>9.1} {:>8}\n",
+                    "{:<width$} {:>9} {:>9} {:<11} {:>9.3} {:>7.2} {:>9} {:>9.1} {:>8}\n",
                     name,
                     build,
                     bytes,

@@ -1,6 +1,6 @@
 //! `raystep bench MESH.obj`: build and trace times of chapter 8's
-//! hierarchies and chapter 9's grid on a triangle mesh, beside obvhs and
-//! bvh (`--peers`).
+//! hierarchies, chapter 9's grid and chapter 10's kd-tree on a triangle
+//! mesh, beside obvhs and bvh (`--peers`).
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -56,6 +56,9 @@ pub enum AccelArg {
     Bvh,
     /// Chapter 9's uniform grid (`--grid-fill`, `--grid-cells`).
     Grid,
+    /// Chapter 10's kd-tree, SAH from events (`--kd-clip`).
+    #[value(name = "kdtree")]
+    KdTree,
 }
 
 /// `--grid-fill`: which cells list a triangle.
@@ -73,6 +76,25 @@ impl FillArg {
         match self {
             FillArg::Boxes => ch09::Fill::Boxes,
             FillArg::Exact => ch09::Fill::Exact,
+        }
+    }
+}
+
+/// `--kd-clip`: which box of a triangle the kd-tree's builder weighs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum ClipArg {
+    /// Its bounding box cut to the node.
+    Boxes,
+    /// The box of the triangle clipped to the node ("perfect splits").
+    Triangles,
+}
+
+impl ClipArg {
+    /// The clip it names.
+    pub fn clip(self) -> ch10::Clip {
+        match self {
+            ClipArg::Boxes => ch10::Clip::Boxes,
+            ClipArg::Triangles => ch10::Clip::Triangles,
         }
     }
 }

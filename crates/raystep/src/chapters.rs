@@ -14,6 +14,7 @@ pub const CHAPTERS: &[&Chapter] = &[
     &ch07_figures::CHAPTER,
     &ch08_figures::CHAPTER,
     &ch09_figures::CHAPTER,
+    &ch10_figures::CHAPTER,
 ];
 
 /// The chapter the user named (`1`, `01`, `ch01`, …), among `chapters`.

@@ -112,13 +112,15 @@ enum Command {
         chapter: Option<String>,
         /// What searches the objects for each ray: the lecture's loop over
         /// every object (`brute`), chapter 8's bounding volume hierarchy
-        /// (`bvh`, binned SAH) or chapter 9's uniform grid (`grid`); the
-        /// image is the same.
+        /// (`bvh`, binned SAH), chapter 9's uniform grid (`grid`), chapter
+        /// 10's kd-tree (`kdtree`, SAH) or chapter 10's rule for which of
+        /// them a scene needs (`auto`); the image is the same.
         #[arg(long, value_enum, default_value_t = render::Accel::Brute)]
         accel: render::Accel,
     },
-    /// Time chapter 8's hierarchies and chapter 9's grid on a triangle mesh
-    /// (build, trace, the work per ray), beside obvhs and bvh with `--peers`.
+    /// Time chapter 8's hierarchies, chapter 9's grid and chapter 10's
+    /// kd-tree on a triangle mesh (build, trace, the work per ray), beside
+    /// obvhs and bvh with `--peers`.
     ///
     /// Ray sets: `primary` (a SIZE × SIZE pinhole camera fitted to the
     /// mesh), `shadow` (from a point light to every primary hit; any hit),
@@ -171,9 +173,11 @@ enum Command {
         )]
         precision: Vec<bench::PrecisionArg>,
         /// What to run of ours, comma-separated: chapter 8's hierarchies
-        /// (`bvh`: each of --builders in each --precision) and chapter 9's
+        /// (`bvh`: each of --builders in each --precision), chapter 9's
         /// uniform grid (`grid`: each --grid-fill; its "nodes" are the
-        /// cells a ray visits).
+        /// cells a ray visits) and chapter 10's kd-tree (`kdtree`: SAH
+        /// from events, each --kd-clip; its "nodes" are the nodes a ray
+        /// reaches).
         #[arg(long, value_enum, value_delimiter = ',', default_value = "bvh")]
         accel: Vec<bench::AccelArg>,
         /// The grid's cells along the longest axis [default: the rule,
@@ -190,6 +194,16 @@ enum Command {
             default_value = "exact"
         )]
         grid_fill: Vec<bench::FillArg>,
+        /// How the kd-tree's builder weighs a triangle in a node,
+        /// comma-separated: by its bounding box cut to the node, or by the
+        /// triangle clipped to the node (`triangles`: perfect splits).
+        #[arg(
+            long,
+            value_enum,
+            value_delimiter = ',',
+            default_value = "boxes"
+        )]
+        kd_clip: Vec<bench::ClipArg>,
         /// Also run obvhs (Bvh2, CwBvh) and bvh on the same input.
         #[arg(long)]
         peers: bool,
@@ -480,6 +494,7 @@ fn main() -> ExitCode {
             accel,
             grid_cells,
             grid_fill,
+            kd_clip,
             peers,
             brute_force,
             json,
@@ -507,6 +522,14 @@ fn main() -> ExitCode {
                             cells: grid_cells.map(usize::from),
                             mailbox: true,
                         })
+                        .collect()
+                } else {
+                    Vec::new()
+                },
+                kd_trees: if accel.contains(&bench::AccelArg::KdTree) {
+                    kd_clip
+                        .iter()
+                        .map(|c| raystep_bench::KdSpec::sah(c.clip()))
                         .collect()
                 } else {
                     Vec::new()

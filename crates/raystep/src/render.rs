@@ -43,6 +43,13 @@ pub enum Accel {
     /// Chapter 9's uniform grid: the resolution rule (3·∛N cells along
     /// the longest axis), objects listed by their boxes, mailboxing on.
     Grid,
+    /// Chapter 10's kd-tree: SAH planes from sorted events, the chosen
+    /// costs, mailboxing on.
+    #[value(name = "kdtree")]
+    KdTree,
+    /// The rule of chapter 10: the structure the scene's objects call for,
+    /// chosen from their boxes before building (`ch10::choose`).
+    Auto,
 }
 
 impl Accel {
@@ -52,6 +59,8 @@ impl Accel {
             Accel::Brute => "brute",
             Accel::Bvh => "bvh",
             Accel::Grid => "grid",
+            Accel::KdTree => "kdtree",
+            Accel::Auto => "auto",
         }
     }
 
@@ -71,6 +80,14 @@ impl Accel {
                     ch09::Resolution::Rule,
                 ))
             },
+            Accel::KdTree => |objects| {
+                Arc::new(ch10::KdTree::for_objects(
+                    objects,
+                    ch10::KdBuilder::SahEvents,
+                    ch10::KdCosts::CHOSEN,
+                ))
+            },
+            Accel::Auto => ch10::auto,
         }
     }
 }

@@ -194,13 +194,93 @@ fn the_grid_runs_beside_the_hierarchy() {
     assert!(!text(&run.stdout).contains("SAH"), "{}", text(&run.stdout));
     refused(
         &dir,
-        &[obj.to_str().unwrap(), "--accel", "kdtree"],
-        "kdtree",
+        &[obj.to_str().unwrap(), "--accel", "octree"],
+        "octree",
     );
     refused(
         &dir,
         &[obj.to_str().unwrap(), "--grid-cells", "0"],
         "--grid-cells",
+    );
+}
+
+/// `--accel bvh,kdtree`: chapter 10's kd-tree runs beside the hierarchy,
+/// each `--kd-clip` its own method, on the same rays, with the same
+/// answers.
+#[test]
+fn the_kd_tree_runs_beside_the_hierarchy() {
+    let dir = scratch("kdtree");
+    let (obj, json) = (dir.join("square.obj"), dir.join("report.json"));
+    fs::write(&obj, SQUARE).unwrap();
+    let run = raystep(&[
+        "bench",
+        obj.to_str().unwrap(),
+        "--size",
+        "16",
+        "--incoherent",
+        "200",
+        "--rounds",
+        "1",
+        "--precision",
+        "f64",
+        "--accel",
+        "bvh,kdtree",
+        "--kd-clip",
+        "boxes,triangles",
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert!(run.status.success(), "{}", text(&run.stderr));
+    let report: serde_json::Value =
+        serde_json::from_str(&fs::read_to_string(&json).unwrap()).unwrap();
+    let methods: Vec<&str> = report["methods"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|m| m["method"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        methods,
+        [
+            "ours: SAH, 16 bins, f64",
+            "kd-tree: SAH, events, boxes",
+            "kd-tree: SAH, events, perfect splits",
+        ]
+    );
+    for method in report["methods"].as_array().unwrap() {
+        assert_eq!(method["ours"], true, "{method}");
+        for set in method["sets"].as_array().unwrap() {
+            assert_eq!(set["disagreements"], 0, "{method}");
+        }
+    }
+    fs::remove_file(&json).unwrap();
+    // only the kd-tree, clipped by boxes unless asked; a clip we do not
+    // have is refused by name
+    let run = raystep(&[
+        "bench",
+        obj.to_str().unwrap(),
+        "--size",
+        "4",
+        "--rounds",
+        "1",
+        "--accel",
+        "kdtree",
+    ]);
+    assert!(run.status.success(), "{}", text(&run.stderr));
+    let table = text(&run.stdout);
+    assert!(table.contains("kd-tree: SAH, events, boxes"), "{table}");
+    assert!(!table.contains("ours:"), "{table}");
+    assert!(!table.contains("perfect splits"), "{table}");
+    refused(
+        &dir,
+        &[
+            obj.to_str().unwrap(),
+            "--accel",
+            "kdtree",
+            "--kd-clip",
+            "perfect",
+        ],
+        "--kd-clip",
     );
 }
 

@@ -232,12 +232,13 @@ fn chapter_08_renders_its_primitives_and_others_refuse_them() {
     assert!(!refused.exists());
 }
 
-/// `--accel bvh` and `--accel grid` search with chapter 8's hierarchy and
-/// chapter 9's grid and draw the same bytes as the lecture's loop, for a
-/// chapter 6 scene, chapter 8's and chapter 9's; an unknown value is
-/// refused by name.
+/// `--accel bvh`, `grid`, `kdtree` and `auto` search with chapter 8's
+/// hierarchy, chapter 9's grid, chapter 10's kd-tree and chapter 10's
+/// rule, and draw the same bytes as the lecture's loop, for a chapter 6
+/// scene, chapter 8's and chapter 9's; an unknown value is refused by
+/// name.
 #[test]
-fn the_bvh_and_the_grid_draw_the_same_image_as_the_loop() {
+fn every_accelerator_draws_the_same_image_as_the_loop() {
     let dir = scratch("accel");
     for chapter_scene in [
         "ch06-refraction/scenes/materials.toml",
@@ -245,7 +246,8 @@ fn the_bvh_and_the_grid_draw_the_same_image_as_the_loop() {
         "ch09-grids/scenes/stadium.toml",
     ] {
         let mut images = Vec::new();
-        for accel in ["brute", "bvh", "grid"] {
+        let accels = ["brute", "bvh", "grid", "kdtree", "auto"];
+        for accel in accels {
             let out = dir.join(format!("{accel}.png"));
             let run = raystep(&[
                 "render",
@@ -266,19 +268,17 @@ fn the_bvh_and_the_grid_draw_the_same_image_as_the_loop() {
             assert!(said.contains(&format!("--accel {accel}")), "{said}");
             images.push(fs::read(&out).unwrap());
         }
-        assert!(images[0] == images[1], "{chapter_scene}: the BVH's differs");
-        assert!(
-            images[0] == images[2],
-            "{chapter_scene}: the grid's differs"
-        );
+        for (accel, image) in accels.iter().zip(&images).skip(1) {
+            assert!(images[0] == *image, "{chapter_scene}: {accel}'s differs");
+        }
     }
     let run = raystep(&[
         "render",
         &scene("ch03-illumination/scenes/spheres.toml"),
         "--accel",
-        "kd-tree",
+        "octree",
     ]);
     assert!(!run.status.success());
     let stderr = String::from_utf8_lossy(&run.stderr);
-    assert!(stderr.contains("'kd-tree'"), "{stderr}");
+    assert!(stderr.contains("'octree'"), "{stderr}");
 }
