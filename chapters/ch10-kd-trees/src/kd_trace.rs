@@ -19,7 +19,7 @@ impl KdTree {
         objects: &[Object],
         ray: &Ray,
         interval: Interval,
-        observe: &mut dyn FnMut(&KdVisit, Option<u32>),
+        mut observe: impl FnMut(&KdVisit, Option<u32>),
     ) -> Option<(usize, Hit)> {
         let mut interval = interval;
         let mut closest = None;
@@ -66,7 +66,7 @@ impl Accelerator for KdTree {
         ray: &Ray,
         interval: Interval,
     ) -> Option<(usize, Hit)> {
-        self.closest_hit_observed(objects, ray, interval, &mut |_, _| {})
+        self.closest_hit_observed(objects, ray, interval, |_, _| {})
     }
 
     /// Does anything meet the ray? The first blocker ends the walk.

@@ -5,6 +5,7 @@ use raystep_world::Object;
 
 use crate::{KdCosts, build_events, build_sorting, median};
 
+// ANCHOR: node
 /// One node of a [`KdTree`], stored depth first: an interior node's
 /// child below its plane is the very next node.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -28,6 +29,7 @@ pub enum KdNode {
         count: u32,
     },
 }
+// ANCHOR_END: node
 
 /// How a [`KdTree`] chooses its planes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -63,6 +65,16 @@ pub enum Clip {
     /// node (the triangle clipped to the node), tighter once a triangle
     /// has been cut.
     Triangles,
+}
+
+impl Clip {
+    /// `boxes`, `perfect splits`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Clip::Boxes => "boxes",
+            Clip::Triangles => "perfect splits",
+        }
+    }
 }
 
 /// The deepest any tree goes, whatever the rule gives (the traversal's

@@ -64,7 +64,10 @@ pub use raystep_world::{Accelerator, Object};
 
 mod auto;
 
-pub use auto::{FEW, Structure, auto, choose};
+pub use auto::{
+    FEW, FULLEST_OVER_MEAN, MANY, SPREAD_CELLS, Spread, Structure, auto,
+    choose, spread,
+};
 
 // ---------------------------------------------------------------------
 // Stability: the rays and scenes where a kd-tree can go wrong.

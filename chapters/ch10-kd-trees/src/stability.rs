@@ -197,14 +197,14 @@ pub fn kd_rays(tree: &KdTree, per_case: usize, seed: u64) -> Vec<KdRayCase> {
             origin[along] = centre[along] - far * 0.5;
             Ray::new(origin, signed_unit(r, along).abs())
         }),
-        case("axis-parallel, in a plane (±0)", &mut |r| {
+        case("axis-parallel in a plane (±0)", &mut |r| {
             let (axis, plane, node) = split(r);
             let mut origin = inside(r, &node);
             origin[axis] = plane;
             let along = (axis + 1 + (r.next_u64() % 2) as usize) % 3;
             Ray::new(origin, signed_unit(r, along))
         }),
-        case("axis-parallel, anywhere (±0)", &mut |r| {
+        case("axis-parallel anywhere (±0)", &mut |r| {
             let along = (r.next_u64() % 3) as usize;
             Ray::new(inside(r, &b), signed_unit(r, along))
         }),

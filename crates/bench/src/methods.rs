@@ -73,12 +73,14 @@ impl GridSpec {
 }
 
 /// How one of our kd-trees is made and walked.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct KdSpec {
     /// How it chooses its planes.
     pub builder: KdBuilder,
     /// Which box of a triangle the builder weighs in a node.
     pub clip: Clip,
+    /// The SAH's constants.
+    pub costs: KdCosts,
     /// Does a ray skip triangles it has already tested?
     pub mailbox: bool,
 }
@@ -90,6 +92,7 @@ impl KdSpec {
         KdSpec {
             builder: KdBuilder::SahEvents,
             clip,
+            costs: KdCosts::CHOSEN,
             mailbox: true,
         }
     }
@@ -123,12 +126,17 @@ impl Method {
                 format!("grid: {cells}, {}{mailbox}", spec.fill.name())
             }
             Method::Kd(spec) => {
-                let clip = match spec.clip {
-                    Clip::Boxes => "boxes",
-                    Clip::Triangles => "perfect splits",
-                };
+                let clip = spec.clip.name();
                 let mailbox = if spec.mailbox { "" } else { ", no mailbox" };
-                format!("kd-tree: {}, {clip}{mailbox}", spec.builder.name())
+                let costs = if spec.costs == KdCosts::CHOSEN {
+                    String::new()
+                } else {
+                    format!(", costs {}", spec.costs.name())
+                };
+                format!(
+                    "kd-tree: {}, {clip}{costs}{mailbox}",
+                    spec.builder.name()
+                )
             }
             Method::ObvhsBvh2 => "obvhs Bvh2".into(),
             Method::ObvhsCwBvh => "obvhs CwBvh".into(),
@@ -182,12 +190,8 @@ impl Method {
             }
             Method::Kd(spec) => {
                 let start = Instant::now();
-                let mut kd = MeshKd::new(
-                    triangles,
-                    spec.builder,
-                    KdCosts::CHOSEN,
-                    spec.clip,
-                );
+                let mut kd =
+                    MeshKd::new(triangles, spec.builder, spec.costs, spec.clip);
                 kd.tree.mailboxing = spec.mailbox;
                 let build_ms = start.elapsed().as_secs_f64() * 1e3;
                 Built {

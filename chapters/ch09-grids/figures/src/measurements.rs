@@ -46,13 +46,13 @@ pub struct ChartScene {
 }
 
 /// The camera rays' image size.
-const SIZE: u32 = 256;
+pub const SIZE: u32 = 256;
 /// The incoherent rays: how many, and their seed.
-const INCOHERENT: usize = 1 << 16;
+pub const INCOHERENT: usize = 1 << 16;
 
 /// The camera close to the bunny in its stadium, looking at it slightly
 /// from above: the walls and the floor fill the view behind it.
-fn stadium_camera(size: u32) -> RaySet {
+pub fn stadium_camera(size: u32) -> RaySet {
     let camera = Camera::look_at(
         DVec3::new(0.4, 0.6, 2.4),
         DVec3::new(0.0, 0.45, 0.0),
@@ -74,7 +74,9 @@ fn stadium_camera(size: u32) -> RaySet {
     }
 }
 
-fn scene(name: &str, triangles: Vec<[DVec3; 3]>) -> ChartScene {
+/// A scene of the charts: camera rays fitted to it (the stadium's: close
+/// to the bunny).
+pub fn scene(name: &str, triangles: Vec<[DVec3; 3]>) -> ChartScene {
     let primary = if name == "stadium" {
         stadium_camera(SIZE)
     } else {
@@ -87,7 +89,8 @@ fn scene(name: &str, triangles: Vec<[DVec3; 3]>) -> ChartScene {
     }
 }
 
-fn bounds(triangles: &[[DVec3; 3]]) -> Aabb {
+/// The triangles' box.
+pub fn bounds(triangles: &[[DVec3; 3]]) -> Aabb {
     Aabb::around(triangles.iter().flatten().copied())
 }
 
@@ -102,8 +105,9 @@ pub fn families() -> Result<Vec<ChartScene>, String> {
     ])
 }
 
-/// Runs `methods` on `scene`'s sets on one thread, rounds taking turns.
-fn run(
+/// Runs `methods` on `scene`'s sets on one thread, rounds taking turns;
+/// an error if any method answers a ray unlike the first.
+pub fn run(
     scene: &ChartScene,
     sets: &[RaySet],
     methods: &[Method],
@@ -144,11 +148,13 @@ fn run(
     Ok(reports)
 }
 
-fn ns(report: &MethodReport, k: usize) -> f64 {
+/// Nanoseconds per ray of set `k`.
+pub fn ns(report: &MethodReport, k: usize) -> f64 {
     1e3 / report.sets[k].mrays_per_s
 }
 
-fn work(report: &MethodReport, k: usize) -> f64 {
+/// Nodes (or cells) and triangle tests per ray of set `k`.
+pub fn work(report: &MethodReport, k: usize) -> f64 {
     let set = &report.sets[k];
     set.nodes_per_ray.unwrap_or(0.0) + set.triangles_per_ray
 }

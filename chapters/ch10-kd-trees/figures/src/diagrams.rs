@@ -432,7 +432,7 @@ fn kd_traversal() -> Figure {
         &objects,
         &ray,
         Interval::FORWARD,
-        &mut |visit, object| match object {
+        |visit: &ch10::KdVisit, object| match object {
             None => reached.push(Reached {
                 node: visit.node,
                 t_min: visit.t_min,
@@ -843,7 +843,7 @@ mod tests {
                 &objects,
                 &ray,
                 Interval::FORWARD,
-                &mut |_, _| {},
+                |_, _| {},
             );
             assert_eq!(
                 found.map(|(k, h)| (k, h.t)),
