@@ -81,13 +81,6 @@ impl Clip {
 /// stack holds one entry per level).
 pub const MAX_DEPTH: usize = 60;
 
-/// The termination rule's depth: 8 + 1.3·log₂ N, rounded (pbrt), at most
-/// [`MAX_DEPTH`].
-pub fn max_depth(objects: usize) -> usize {
-    let n = objects.max(1) as f64;
-    ((8.0 + 1.3 * n.log2()).round() as usize).min(MAX_DEPTH)
-}
-
 /// The most objects a median tree leaves in a leaf.
 pub const MEDIAN_LEAF: usize = 2;
 
@@ -201,8 +194,8 @@ impl Output {
 
 impl KdTree {
     /// The tree over `boxes` (object `i` has box `boxes[i]`), cut by
-    /// `builder` with the cost model `costs` (the median builder ignores
-    /// it). Objects without a finite box go to [`KdTree::unbounded`].
+    /// `builder` with the cost model `costs` (the median builder uses
+    /// only its depth rule). Objects without a finite box go to [`KdTree::unbounded`].
     pub fn build(boxes: &[Aabb], builder: KdBuilder, costs: KdCosts) -> KdTree {
         build(boxes, None, builder, costs)
     }
@@ -331,7 +324,7 @@ fn build(
         boxes,
         triangles,
         costs,
-        max_depth: max_depth(inside.len()),
+        max_depth: costs.max_depth(inside.len()),
     };
     let mut out = Output::default();
     match builder {

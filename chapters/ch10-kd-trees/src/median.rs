@@ -52,6 +52,13 @@ fn subtree(
             }
         }
     }
+    // Step 4: a cut that separates nothing (every object on both
+    // sides) makes no progress: a leaf. Without this, tiny cells under
+    // larger triangles would split on down to the depth limit.
+    if below.len() == objects.len() && above.len() == objects.len() {
+        out.leaf(objects.iter().copied());
+        return;
+    }
     let (below_box, above_box) = children(&node, axis, position);
     let me = out.split(axis, position);
     subtree(input, &below, below_box, depth + 1, out);

@@ -8,7 +8,6 @@ use ch08::{
 };
 use ch10::{
     Aabb, Clip, DVec3, Interval, KdBuilder, KdCosts, KdNode, KdTree, MeshKd,
-    max_depth,
 };
 use raystep_check::{Table, num_places};
 
@@ -59,14 +58,20 @@ fn no_tree_is_deeper_than_the_rule() {
         for builder in [KdBuilder::Median, KdBuilder::SahEvents] {
             let tree = KdTree::build(&b, builder, KdCosts::CHOSEN);
             let depth = tree.stats(&KdCosts::CHOSEN).depth;
-            assert!(depth <= max_depth(triangles.len()), "{name}: {depth}");
+            assert!(
+                depth <= KdCosts::CHOSEN.max_depth(triangles.len()),
+                "{name}: {depth}"
+            );
         }
     }
     // the cluster's median tree goes all the way down
     let (_, cluster) = scenes().remove(3);
     let tree =
         KdTree::build(&boxes(&cluster), KdBuilder::Median, KdCosts::CHOSEN);
-    assert_eq!(tree.stats(&KdCosts::CHOSEN).depth, max_depth(cluster.len()));
+    assert_eq!(
+        tree.stats(&KdCosts::CHOSEN).depth,
+        KdCosts::CHOSEN.max_depth(cluster.len())
+    );
 }
 
 /// Every object is listed in a leaf that reaches it: each bounded

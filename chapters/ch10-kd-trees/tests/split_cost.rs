@@ -14,6 +14,7 @@ const UNIT: KdCosts = KdCosts {
     traversal: 1.0,
     intersection: 1.0,
     empty_bonus: 0.5,
+    depth_factor: 2.0,
 };
 
 #[test]

@@ -104,17 +104,32 @@ pub fn measure_build(
 // The tree's variants on the benchmark's rays.
 // ---------------------------------------------------------------------
 
-/// The variants: perfect splits, pbrt's costs, the median tree, beside
-/// the chapter's tree (SAH, events, Wald and Havran's costs, boxes).
-fn variants() -> [(&'static str, KdSpec); 4] {
+/// The variants: perfect splits, pbrt's costs, pbrt's depth rule, the
+/// median tree, beside the chapter's tree (SAH, events, Wald and
+/// Havran's costs, depth 8 + 2·log₂ N, boxes).
+fn variants() -> [(&'static str, KdSpec); 5] {
     let sah = KdSpec::sah(Clip::Boxes);
+    let chosen = KdCosts::CHOSEN;
     [
         ("SAH W&H boxes", sah),
         ("SAH W&H perfect", KdSpec::sah(Clip::Triangles)),
         (
-            "SAH pbrt boxes",
+            "SAH pbrt costs",
             KdSpec {
-                costs: KdCosts::PBRT_V3,
+                costs: KdCosts {
+                    depth_factor: chosen.depth_factor,
+                    ..KdCosts::PBRT_V3
+                },
+                ..sah
+            },
+        ),
+        (
+            "SAH W&H depth 1.3",
+            KdSpec {
+                costs: KdCosts {
+                    depth_factor: KdCosts::PBRT_V3.depth_factor,
+                    ..chosen
+                },
                 ..sah
             },
         ),

@@ -61,7 +61,8 @@ impl CsvRow for BuildRow {
 pub struct VariantRow {
     /// `bunny`, `bunny-235k`, `uniform-10000`.
     pub scene: String,
-    /// `SAH W&H boxes`, `SAH W&H perfect`, `SAH pbrt boxes`, `median`.
+    /// `SAH W&H boxes`, `SAH W&H perfect`, `SAH pbrt costs`, `SAH W&H
+    /// depth 1.3`, `median`.
     pub variant: String,
     /// Milliseconds to build.
     pub build_ms: f64,
