@@ -285,6 +285,12 @@ impl KdTree {
             .sum()
     }
 
+    /// Bytes of its nodes and lists.
+    pub fn bytes(&self) -> usize {
+        self.nodes.len() * size_of::<KdNode>()
+            + (self.items.len() + self.unbounded.len()) * size_of::<u32>()
+    }
+
     /// Its nodes, leaves, entries and bytes; its SAH cost under `costs`.
     pub fn stats(&self, costs: &KdCosts) -> KdStats {
         let leaves = self
@@ -299,8 +305,7 @@ impl KdTree {
                 .count(),
             depth: self.node_depths().into_iter().max().unwrap_or(0),
             entries: self.items.len(),
-            bytes: self.nodes.len() * size_of::<KdNode>()
-                + (self.items.len() + self.unbounded.len()) * size_of::<u32>(),
+            bytes: self.bytes(),
             sah_cost: self.sah_cost(costs),
         }
     }

@@ -32,8 +32,7 @@ impl MeshKd {
 
     /// The bytes the walk reads: nodes, lists, and the corners.
     pub fn bytes(&self) -> usize {
-        self.tree.stats(&KdCosts::PBRT_V3).bytes
-            + self.triangles.len() * size_of::<[DVec3; 3]>()
+        self.tree.bytes() + self.triangles.len() * size_of::<[DVec3; 3]>()
     }
 
     /// The closest hit within `interval`; `counts` gets the nodes

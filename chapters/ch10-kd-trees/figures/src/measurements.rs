@@ -328,8 +328,7 @@ fn structure_bytes(structure: Structure, objects: &[Object]) -> usize {
         }
         Structure::KdTree => {
             KdTree::for_objects(objects, KdBuilder::SahEvents, KdCosts::CHOSEN)
-                .stats(&KdCosts::CHOSEN)
-                .bytes
+                .bytes()
         }
     }
 }
