@@ -123,7 +123,7 @@ pub use bvh_stats::TreeStats;
 pub use edge_rays::{
     EDGE_REACH, LeakSurface, leak_surfaces, leaks, shared_edge_rays,
 };
-pub use mesh_bvh::{MeshBvh, NodePrecision, Ray32, triangle_boxes};
+pub use mesh_bvh::{MeshBvh, NodePrecision, Ray32, outward, triangle_boxes};
 pub use mesh_trace::{MeshHit, PreparedRay, TraceCounts};
 pub use near_first::near_first_closest_hit;
 pub use raystep_world::{Accelerator, Object, World};

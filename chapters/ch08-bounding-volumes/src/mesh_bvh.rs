@@ -204,7 +204,7 @@ fn node32(
 }
 
 /// `x` in `f32`, rounded up (`up`) or down: the box can only grow.
-pub(crate) fn outward(x: f64, up: bool) -> f32 {
+pub fn outward(x: f64, up: bool) -> f32 {
     let y = x as f32; // to nearest
     match (up, f64::from(y).total_cmp(&x)) {
         (true, std::cmp::Ordering::Less) => y.next_up(),

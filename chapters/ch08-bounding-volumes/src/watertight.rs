@@ -46,6 +46,10 @@ pub fn watertight(
 /// lies inside the sheared triangle (each corner as its `(x, y)` across
 /// the ray and its `z` along it). Chapter 8's fast walk shears each ray's
 /// triangles itself (steps 1–3 once per ray) and then asks this.
+/// (Inlined: the appendix's walks call it through
+/// [`PreparedRay::triangle`](crate::PreparedRay::triangle) from another
+/// crate.)
+#[inline]
 pub(crate) fn sheared_hit(
     sheared: [(DVec2, f64); 3],
     interval: Interval,
@@ -92,6 +96,7 @@ pub(crate) fn sheared_hit(
 /// Kahan's determinant ([`difference_of_products`]), and do so wherever
 /// the fast value is within its rounding error of 0, so its sign is never
 /// wrong — that is what keeps a shared *vertex* watertight as well.
+#[inline]
 fn edge_function(p: DVec2, q: DVec2) -> f64 {
     // Step 1: the fast value: two rounded products and their difference.
     let (left, right) = (p.x * q.y, p.y * q.x);

@@ -6,9 +6,12 @@
 //! reported with the work per ray that explains them (node visits,
 //! triangle tests), every answer checked against the first method's and a
 //! sample against brute force. With the `peers` feature the Rust BVH
-//! libraries obvhs and bvh run beside ours.
+//! libraries obvhs and bvh run beside ours; with `embree`, Intel's Embree
+//! too, its library loaded at run time (reported skipped where missing).
 #![deny(missing_docs)]
 
+#[cfg(feature = "embree")]
+mod embree;
 mod error;
 mod methods;
 #[cfg(feature = "peers")]
@@ -31,7 +34,10 @@ pub use rays::{
     shadow,
 };
 pub use report::{BenchReport, MethodReport, SetInfo, SetReport};
-pub use run::{Answer, MISS, agree, compare, median, trace};
+pub use run::{
+    Answer, MISS, OWN_TEST_TOLERANCE, agree, agree_within, compare, median,
+    trace,
+};
 
 /// What to benchmark.
 #[derive(Clone, Debug)]
@@ -58,6 +64,8 @@ pub struct BenchOptions {
     pub grids: Vec<GridSpec>,
     /// Our kd-trees (chapter 10).
     pub kd_trees: Vec<KdSpec>,
+    /// The appendix's steps.
+    pub fast: Vec<ch11::Step>,
     /// Run the peers too (needs the `peers` feature).
     pub peers: bool,
     /// Rays per set checked against brute force.
@@ -178,8 +186,13 @@ pub fn run(options: &BenchOptions) -> Result<BenchRun, BenchError> {
     for &spec in &options.kd_trees {
         methods.push(Method::Kd(spec));
     }
+    for &step in &options.fast {
+        methods.push(Method::Fast(step));
+    }
+    let mut skipped = Vec::new();
     if options.peers {
         methods.extend(Method::peers());
+        skipped = Method::skipped_peers();
     }
     let Some(&first) = methods.first() else {
         return Err(BenchError::Argument {
@@ -235,6 +248,8 @@ pub fn run(options: &BenchOptions) -> Result<BenchRun, BenchError> {
             &triangles,
             &sets,
             reference.tracer.as_ref(),
+            // brute force uses our test: only the first's own one counts
+            first.own_triangle_test().then_some(run::OWN_TEST_TOLERANCE),
             options.brute_force,
             &progress,
         );
@@ -259,6 +274,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchRun, BenchError> {
                 })
                 .collect(),
             methods: reports,
+            skipped,
         };
         Ok(BenchRun {
             report,

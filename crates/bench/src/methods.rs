@@ -1,7 +1,8 @@
 //! What a benchmark compares: our hierarchy (a builder and a node
 //! precision), our grid (chapter 9), our kd-tree (chapter 10) and, with
-//! the `peers` feature, other libraries' hierarchies — each built on the
-//! same triangles and asked through one trait.
+//! the `peers` feature, other libraries' hierarchies (with `embree`,
+//! Intel's Embree too) — each built on the same triangles and asked
+//! through one trait.
 use std::time::Instant;
 
 use ch08::{
@@ -40,6 +41,8 @@ pub enum Method {
     Grid(GridSpec),
     /// Our kd-tree (chapter 10).
     Kd(KdSpec),
+    /// A step of the appendix "how fast can it go".
+    Fast(ch11::Step),
     /// obvhs's `Bvh2` (PLOC, reinsertion, leaves collapsed by the SAH;
     /// its `medium_build` preset), walked by its own traversal.
     ObvhsBvh2,
@@ -48,6 +51,15 @@ pub enum Method {
     /// The `bvh` crate (svenstaro): its binned-SAH build and its
     /// traversal iterator.
     BvhCrate,
+    /// Intel's Embree 3 (its default, medium-quality build), loaded at
+    /// run time: the one method with its own triangle test.
+    Embree {
+        /// The library's version, MAJOR·10000 + MINOR·100 + PATCH.
+        version: u32,
+        /// With its robust flag (`RTC_SCENE_FLAG_ROBUST`): no ray through
+        /// a crack between triangles, a little slower.
+        robust: bool,
+    },
 }
 
 /// How one of our grids is made and walked.
@@ -138,25 +150,78 @@ impl Method {
                     spec.builder.name()
                 )
             }
+            Method::Fast(step) => format!("fast: {}", step.name()),
             Method::ObvhsBvh2 => "obvhs Bvh2".into(),
             Method::ObvhsCwBvh => "obvhs CwBvh".into(),
             Method::BvhCrate => "bvh".into(),
+            Method::Embree { version, robust } => format!(
+                "Embree {}.{}.{}{}",
+                version / 10000,
+                version / 100 % 100,
+                version % 100,
+                if *robust { " robust" } else { "" }
+            ),
         }
     }
 
     /// Is this one of ours?
     pub fn is_ours(&self) -> bool {
-        matches!(self, Method::Ours(..) | Method::Grid(..) | Method::Kd(..))
+        matches!(
+            self,
+            Method::Ours(..)
+                | Method::Grid(..)
+                | Method::Kd(..)
+                | Method::Fast(..)
+        )
     }
 
-    /// The peers this build was compiled with (none without the `peers`
-    /// feature).
+    /// Does it test triangles its own way, not with the chapter's
+    /// watertight test? Then its `t` may differ from ours in the last
+    /// bits, and answers are compared within
+    /// [`OWN_TEST_TOLERANCE`](crate::OWN_TEST_TOLERANCE).
+    pub fn own_triangle_test(&self) -> bool {
+        matches!(self, Method::Embree { .. })
+    }
+
+    /// The peers this build was compiled with that can run here (none
+    /// without the `peers` feature; Embree only where its library loads).
     pub fn peers() -> Vec<Method> {
+        let mut peers = Vec::new();
         if cfg!(feature = "peers") {
-            vec![Method::ObvhsBvh2, Method::ObvhsCwBvh, Method::BvhCrate]
-        } else {
-            Vec::new()
+            peers.extend([
+                Method::ObvhsBvh2,
+                Method::ObvhsCwBvh,
+                Method::BvhCrate,
+            ]);
         }
+        #[cfg(feature = "embree")]
+        if let Ok(version) = crate::embree::probe() {
+            peers.push(Method::Embree {
+                version,
+                robust: false,
+            });
+            peers.push(Method::Embree {
+                version,
+                robust: true,
+            });
+        }
+        peers
+    }
+
+    /// The peers this build has (the `peers` feature) that cannot run
+    /// here, one line each saying why: Embree, where its library does not
+    /// load or was not built in.
+    pub fn skipped_peers() -> Vec<String> {
+        #[cfg(feature = "embree")]
+        let why = crate::embree::probe().err();
+        #[cfg(not(feature = "embree"))]
+        let why = cfg!(feature = "peers").then(|| {
+            "this raystep was built without it (`--features embree`)"
+                .to_string()
+        });
+        why.map(|why| format!("Embree: {why}"))
+            .into_iter()
+            .collect()
     }
 
     /// Builds the structure over `triangles`, timed.
@@ -200,6 +265,21 @@ impl Method {
                     tree: None,
                     tracer: Box::new(KdTracer(kd)),
                 }
+            }
+            Method::Fast(step) => {
+                let start = Instant::now();
+                let fast = ch11::FastBvh::build(triangles, step);
+                let build_ms = start.elapsed().as_secs_f64() * 1e3;
+                Built {
+                    build_ms,
+                    bytes: Some(fast.bytes()),
+                    tree: None,
+                    tracer: Box::new(FastTracer(fast)),
+                }
+            }
+            #[cfg(feature = "embree")]
+            Method::Embree { robust, .. } => {
+                crate::embree::build(triangles, robust)
             }
             #[cfg(feature = "peers")]
             peer => crate::peers::build(peer, triangles),
@@ -260,6 +340,31 @@ impl Tracer for GridTracer {
 struct KdTracer(MeshKd);
 
 impl Tracer for KdTracer {
+    fn closest(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> Option<(u32, f32)> {
+        let hit = self.0.closest_hit(ray, interval, counts)?;
+        Some((hit.triangle, hit.t as f32))
+    }
+
+    fn any(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> bool {
+        self.0.any_hit(ray, interval, counts)
+    }
+}
+
+/// A step of the appendix: `nodes` in the counts are the nodes reached
+/// (a wide node once for all its boxes).
+struct FastTracer(ch11::FastBvh);
+
+impl Tracer for FastTracer {
     fn closest(
         &self,
         ray: &Ray32,

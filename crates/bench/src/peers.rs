@@ -44,8 +44,14 @@ pub fn build(method: Method, triangles: &[[DVec3; 3]]) -> Built {
             let bvh = bvh::bvh::Bvh::build(&mut shapes);
             Box::new(BvhCrate(bvh, shapes, triangles.to_vec()))
         }
-        Method::Ours(..) | Method::Grid(..) | Method::Kd(..) => {
+        Method::Ours(..)
+        | Method::Grid(..)
+        | Method::Kd(..)
+        | Method::Fast(..) => {
             unreachable!("ours are built in methods.rs")
+        }
+        Method::Embree { .. } => {
+            unreachable!("Embree is built in embree.rs, with its feature")
         }
     };
     Built {

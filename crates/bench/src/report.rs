@@ -20,9 +20,11 @@ pub struct SetReport {
     pub counts: TraceCounts,
     /// Node visits per ray.
     pub nodes_per_ray: Option<f64>,
-    /// Ray–triangle tests per ray.
+    /// Ray–triangle tests per ray (NaN, `null` in JSON, for a method
+    /// with its own triangle test, which counts nothing).
     pub triangles_per_ray: f64,
-    /// Rays whose answer differs from the first method's.
+    /// Rays whose answer differs from the first method's (as the
+    /// method's `agreement` says).
     pub disagreements: usize,
 }
 
@@ -33,6 +35,13 @@ pub struct MethodReport {
     pub method: String,
     /// Our trees only.
     pub ours: bool,
+    /// How its answers were checked against the first method's: `exact`
+    /// (the same `t`), or `t within 1e-4` (relative) where either tests
+    /// triangles its own way (Embree).
+    pub agreement: String,
+    /// Does it test triangles its own way (and so count none)?
+    #[serde(skip)]
+    pub own_triangle_test: bool,
     /// Milliseconds to build (the median of the rounds).
     pub build_ms: f64,
     /// Bytes of nodes and triangles, where known.
@@ -61,6 +70,8 @@ impl MethodReport {
         MethodReport {
             method: method.name(),
             ours: method.is_ours(),
+            agreement: "exact".into(),
+            own_triangle_test: method.own_triangle_test(),
             build_ms: f64::NAN,
             bytes: None,
             tree: None,
@@ -94,7 +105,11 @@ impl MethodReport {
         }
         for (report, set) in self.sets.iter_mut().zip(sets) {
             let n = set.rays.len().max(1) as f64;
-            report.triangles_per_ray = report.counts.triangles as f64 / n;
+            report.triangles_per_ray = if self.own_triangle_test {
+                f64::NAN
+            } else {
+                report.counts.triangles as f64 / n
+            };
             report.nodes_per_ray =
                 self.ours.then(|| report.counts.nodes as f64 / n);
         }
@@ -132,11 +147,15 @@ pub struct BenchReport {
     pub sets: Vec<SetInfo>,
     /// One entry per method; the first is the reference.
     pub methods: Vec<MethodReport>,
+    /// Peers asked for that could not run, each with why, e.g. `Embree:
+    /// libembree3.so.3 not found (...)`.
+    pub skipped: Vec<String>,
 }
 
 impl BenchReport {
     /// The table for the terminal: one row per method and set, with the
-    /// speed as a ratio to the first method's.
+    /// speed as a ratio to the first method's; a method checked within a
+    /// tolerance is marked ≈; the skipped peers below.
     pub fn table(&self) -> String {
         let mut out = format!(
             "{}: {} triangles, {} thread(s), median of {} round(s)\n",
@@ -153,11 +172,17 @@ impl BenchReport {
                 set.brute_force_disagreements
             );
         }
+        let exact =
+            |m: &MethodReport| m.agreement == crate::run::agreement_name(None);
+        let label = |m: &MethodReport| {
+            let mark = if exact(m) { "" } else { " ≈" };
+            format!("{}{mark}", m.method)
+        };
         // the method column as wide as its longest name
         let width = self
             .methods
             .iter()
-            .map(|m| m.method.chars().count())
+            .map(|m| label(m).chars().count())
             .fold(30, usize::max);
         out += &format!(
             "\n{:<width$} {:>9} {:>9} {:<11} {:>9} {:>7} {:>9} {:>9} {:>8}\n",
@@ -179,7 +204,7 @@ impl BenchReport {
                 });
                 let (name, build, bytes) = if s == 0 {
                     (
-                        method.method.clone(),
+                        label(method),
                         format!("{:.1}", method.build_ms),
                         method.bytes.map_or("—".into(), |b| {
                             format!("{:.1}", b as f64 / 1e6)
@@ -188,8 +213,13 @@ impl BenchReport {
                 } else {
                     (String::new(), String::new(), String::new())
                 };
+                let tests = if set.triangles_per_ray.is_nan() {
+                    "—".into()
+                } else {
+                    format!("{:.1}", set.triangles_per_ray)
+                };
                 out += &format!(
-                    "{:<width$} {:>9} {:>9} {:<11} {:>9.3} {:>7.2} {:>9} {:>9.1} {:>8}\n",
+                    "{:<width$} {:>9} {:>9} {:<11} {:>9.3} {:>7.2} {:>9} {:>9} {:>8}\n",
                     name,
                     build,
                     bytes,
@@ -198,10 +228,20 @@ impl BenchReport {
                     ratio,
                     set.nodes_per_ray
                         .map_or("—".into(), |n| format!("{n:.1}")),
-                    set.triangles_per_ray,
+                    tests,
                     set.disagreements
                 );
             }
+        }
+        if let Some(m) = self.methods.iter().find(|m| !exact(m)) {
+            out += &format!(
+                "≈ agrees with the first method if {} (relative): one of \
+                 the two tests triangles its own way\n",
+                m.agreement
+            );
+        }
+        for why in &self.skipped {
+            out += &format!("skipped: {why}\n");
         }
         for method in &self.methods {
             if let Some(tree) = method.tree {
@@ -218,5 +258,49 @@ impl BenchReport {
             }
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rays::Question;
+
+    /// Embree's row is marked and explained, its name unchanged in JSON;
+    /// a peer that could not run is listed under the table.
+    #[test]
+    fn a_tolerance_and_a_skipped_peer_are_shown() {
+        let sets = [RaySet {
+            name: "primary".into(),
+            question: Question::Closest,
+            rays: Vec::new(),
+        }];
+        let mut embree = MethodReport::new(
+            &Method::Embree {
+                version: 31305,
+                robust: false,
+            },
+            &sets,
+        );
+        embree.agreement = crate::run::agreement_name(Some(1e-4));
+        embree.finish(&sets);
+        let report = BenchReport {
+            mesh: "bunny.obj".into(),
+            triangles: 1,
+            threads: 1,
+            rounds: 1,
+            sets: Vec::new(),
+            methods: vec![embree],
+            skipped: vec!["Embree: why".into()],
+        };
+        let table = report.table();
+        assert!(table.contains("Embree 3.13.5 ≈"), "{table}");
+        assert!(table.contains("if t within 1e-4 (relative)"), "{table}");
+        assert!(table.contains("\nskipped: Embree: why\n"), "{table}");
+        let json = serde_json::to_value(&report).unwrap();
+        assert_eq!(json["methods"][0]["method"], "Embree 3.13.5");
+        assert_eq!(json["methods"][0]["agreement"], "t within 1e-4");
+        assert!(json["methods"][0]["sets"][0]["triangles_per_ray"].is_null());
+        assert_eq!(json["skipped"][0], "Embree: why");
     }
 }

@@ -74,6 +74,39 @@ pub fn agree(a: Answer, b: Answer) -> bool {
     a.0 == b.0 || (a.0.is_nan() && b.0.is_nan())
 }
 
+/// How far apart, relative to `t`, two hits may be and still agree when
+/// one method tests triangles its own way ([`Method::own_triangle_test`]:
+/// Embree's test, in `f32`): its `t` differs from the chapter's `f64` one
+/// in the last bits, up to 2·10⁻⁵ (relative) on the bunny's rays;
+/// 10⁻⁴ leaves room for that, while a hit on another surface further
+/// along (a ray through a crack) still disagrees.
+pub const OWN_TEST_TOLERANCE: f32 = 1e-4;
+
+/// Do two answers agree within `tolerance` of `t` (relative)? As
+/// [`agree`], or both hit with |t_a − t_b| ≤ tolerance · max(t_a, t_b).
+/// Any-hit answers (blocked or not) agree only when they are the same.
+pub fn agree_within(a: Answer, b: Answer, tolerance: f32) -> bool {
+    agree(a, b)
+        || (a.0.is_finite()
+            && b.0.is_finite()
+            && (a.0 - b.0).abs() <= tolerance * a.0.abs().max(b.0.abs()))
+}
+
+/// The tolerance `method`'s answers are checked against `reference`'s
+/// with: none (the same `t`) unless either has its own triangle test.
+pub fn tolerance(method: &Method, reference: &Method) -> Option<f32> {
+    (method.own_triangle_test() || reference.own_triangle_test())
+        .then_some(OWN_TEST_TOLERANCE)
+}
+
+/// [`agree`], or [`agree_within`] a tolerance.
+fn agree_by(a: Answer, b: Answer, tolerance: Option<f32>) -> bool {
+    match tolerance {
+        None => agree(a, b),
+        Some(tolerance) => agree_within(a, b, tolerance),
+    }
+}
+
 /// The median of some numbers (the mean of the middle two for an even
 /// count).
 pub fn median(values: &mut [f64]) -> f64 {
@@ -90,9 +123,10 @@ pub fn median(values: &mut [f64]) -> f64 {
 
 /// Runs the comparison: `rounds` rounds, in each every method built and
 /// traced on every set in turn. The first method's answers are the
-/// reference the others are checked against; the answers of the first
-/// method on the first set are returned for the hit file. `step` is called
-/// after each round.
+/// reference the others are checked against (the same `t`, or within
+/// [`OWN_TEST_TOLERANCE`] where either tests triangles its own way); the
+/// answers of the first method on the first set are returned for the hit
+/// file. `step` is called after each round.
 pub fn compare(
     triangles: &[[DVec3; 3]],
     sets: &[RaySet],
@@ -103,6 +137,11 @@ pub fn compare(
 ) -> (Vec<MethodReport>, Vec<Answer>) {
     let mut reports: Vec<MethodReport> =
         methods.iter().map(|m| MethodReport::new(m, sets)).collect();
+    let tolerances: Vec<Option<f32>> =
+        methods.iter().map(|m| tolerance(m, &methods[0])).collect();
+    for (report, &tolerance) in reports.iter_mut().zip(&tolerances) {
+        report.agreement = agreement_name(tolerance);
+    }
     let mut reference: Vec<Vec<Answer>> = Vec::new();
     let mut build_ms: Vec<Vec<f64>> = vec![Vec::new(); methods.len()];
     let mut seconds: Vec<Vec<Vec<f64>>> =
@@ -135,7 +174,7 @@ pub fn compare(
                     set_report.disagreements = answers
                         .iter()
                         .zip(&reference[s])
-                        .filter(|(a, b)| !agree(**a, **b))
+                        .filter(|(a, b)| !agree_by(**a, **b, tolerances[m]))
                         .count();
                 }
             }
@@ -153,13 +192,22 @@ pub fn compare(
     (reports, first)
 }
 
+/// How a report names a tolerance: `exact`, or `t within 1e-4`.
+pub fn agreement_name(tolerance: Option<f32>) -> String {
+    match tolerance {
+        None => "exact".into(),
+        Some(tolerance) => format!("t within {tolerance:e}"),
+    }
+}
+
 /// Checks `count` rays of each set (evenly spread; all if `count` is at
 /// least the set's size) against brute force: how many were checked, and
-/// how many of the reference answers differ.
+/// how many of the reference answers differ (beyond `tolerance`, if any).
 pub fn check_brute_force(
     triangles: &[[DVec3; 3]],
     sets: &[RaySet],
     reference: &dyn Tracer,
+    tolerance: Option<f32>,
     count: usize,
     progress: &ProgressBar,
 ) -> Vec<(usize, usize)> {
@@ -179,9 +227,47 @@ pub fn check_brute_force(
             let (truth, _) = trace(&brute, &sampled);
             let (ours, _) = trace(reference, &sampled);
             progress.inc(1);
-            let wrong =
-                truth.iter().zip(&ours).filter(|(a, b)| !agree(**a, **b));
+            let wrong = truth
+                .iter()
+                .zip(&ours)
+                .filter(|(a, b)| !agree_by(**a, **b, tolerance));
             (sampled.rays.len(), wrong.count())
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_tolerance_forgives_the_last_bits_only() {
+        let hit = |t: f32| (t, 7);
+        assert!(!agree(hit(2.0), hit(2.0001)));
+        assert!(agree_within(hit(2.0), hit(2.0001), 1e-4));
+        assert!(!agree_within(hit(2.0), hit(2.001), 1e-4));
+        // a miss and a hit never agree, however far the hit
+        assert!(agree_within(MISS, MISS, 1e-4));
+        assert!(!agree_within(hit(f32::MAX), MISS, 1e-4));
+        // any hit: blocked (t = 0) or not
+        assert!(agree_within((0.0, 0), (0.0, 0), 1e-4));
+        assert!(!agree_within((0.0, 0), MISS, 1e-4));
+    }
+
+    #[test]
+    fn only_a_method_with_its_own_test_is_checked_within_it() {
+        let ours = Method::Ours(
+            ch08::Builder::BinnedSah { bins: 16 },
+            ch08::NodePrecision::Single,
+        );
+        let embree = Method::Embree {
+            version: 31305,
+            robust: false,
+        };
+        assert_eq!(tolerance(&Method::BvhCrate, &ours), None);
+        assert_eq!(tolerance(&embree, &ours), Some(OWN_TEST_TOLERANCE));
+        assert_eq!(tolerance(&ours, &embree), Some(OWN_TEST_TOLERANCE));
+        assert_eq!(agreement_name(None), "exact");
+        assert_eq!(agreement_name(Some(1e-4)), "t within 1e-4");
+    }
 }

@@ -59,6 +59,46 @@ pub enum AccelArg {
     /// Chapter 10's kd-tree, SAH from events (`--kd-clip`).
     #[value(name = "kdtree")]
     KdTree,
+    /// The appendix's fast hierarchies (`--fast`).
+    Fast,
+}
+
+/// `--fast`: the appendix's steps, by name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum FastArg {
+    /// Step 2: compact nodes, children ordered by the ray's direction.
+    Ordered,
+    /// Step 3: and the leaves' triangles in f32.
+    LeafF32,
+    /// Step 4: and the full-sweep SAH tree.
+    SweepTree,
+    /// Step 5: 4-wide nodes, boxes tested one by one.
+    Bvh4Scalar,
+    /// 4-wide nodes, SSE.
+    Bvh4Sse,
+    /// 8-wide nodes, one by one.
+    Bvh8Scalar,
+    /// 8-wide nodes, AVX (one by one where the CPU lacks it).
+    Bvh8Avx,
+    /// 8-wide nodes compressed to 96 bytes, AVX2 (one by one where the
+    /// CPU lacks it).
+    Bvh8Compressed,
+}
+
+impl FastArg {
+    /// The step it names.
+    pub fn step(self) -> ch11::Step {
+        match self {
+            FastArg::Ordered => ch11::Step::Ordered,
+            FastArg::LeafF32 => ch11::Step::LeafLayout,
+            FastArg::SweepTree => ch11::Step::SweepTree,
+            FastArg::Bvh4Scalar => ch11::Step::Wide4Scalar,
+            FastArg::Bvh4Sse => ch11::Step::Wide4,
+            FastArg::Bvh8Scalar => ch11::Step::Wide8Scalar,
+            FastArg::Bvh8Avx => ch11::Step::Wide8,
+            FastArg::Bvh8Compressed => ch11::Step::Compressed8,
+        }
+    }
 }
 
 /// `--grid-fill`: which cells list a triangle.

@@ -15,6 +15,7 @@ pub const CHAPTERS: &[&Chapter] = &[
     &ch08_figures::CHAPTER,
     &ch09_figures::CHAPTER,
     &ch10_figures::CHAPTER,
+    &ch11_figures::CHAPTER,
 ];
 
 /// The chapter the user named (`1`, `01`, `ch01`, …), among `chapters`.

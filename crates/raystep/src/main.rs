@@ -177,7 +177,8 @@ enum Command {
         /// uniform grid (`grid`: each --grid-fill; its "nodes" are the
         /// cells a ray visits) and chapter 10's kd-tree (`kdtree`: SAH
         /// from events, each --kd-clip; its "nodes" are the nodes a ray
-        /// reaches).
+        /// reaches) and the appendix's fast hierarchies (`fast`: each
+        /// --fast step).
         #[arg(long, value_enum, value_delimiter = ',', default_value = "bvh")]
         accel: Vec<bench::AccelArg>,
         /// The grid's cells along the longest axis [default: the rule,
@@ -204,7 +205,18 @@ enum Command {
             default_value = "boxes"
         )]
         kd_clip: Vec<bench::ClipArg>,
-        /// Also run obvhs (Bvh2, CwBvh) and bvh on the same input.
+        /// The appendix's steps to run with `--accel fast`,
+        /// comma-separated.
+        #[arg(
+            long,
+            value_enum,
+            value_delimiter = ',',
+            default_value = "ordered,leaf-f32,sweep-tree,bvh4-scalar,bvh4-sse,bvh8-scalar,bvh8-avx,bvh8-compressed"
+        )]
+        fast: Vec<bench::FastArg>,
+        /// Also run obvhs (Bvh2, CwBvh) and bvh on the same input, and
+        /// Embree in a raystep built with `--features embree` (its library,
+        /// libembree3, loaded at run time: reported skipped if missing).
         #[arg(long)]
         peers: bool,
         /// Rays of each set checked against brute force (evenly spread).
@@ -495,6 +507,7 @@ fn main() -> ExitCode {
             grid_cells,
             grid_fill,
             kd_clip,
+            fast,
             peers,
             brute_force,
             json,
@@ -531,6 +544,11 @@ fn main() -> ExitCode {
                         .iter()
                         .map(|c| raystep_bench::KdSpec::sah(c.clip()))
                         .collect()
+                } else {
+                    Vec::new()
+                },
+                fast: if accel.contains(&bench::AccelArg::Fast) {
+                    fast.iter().map(|f| f.step()).collect()
                 } else {
                     Vec::new()
                 },

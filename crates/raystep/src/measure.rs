@@ -147,7 +147,7 @@ mod tests {
         assert_eq!(found.measurements[0].file, "stopping.csv");
         let error = find("02", &measured).err().unwrap().to_string();
         assert!(
-            error.contains("ch04, ch05, ch06, ch07, ch08, ch09, ch10"),
+            error.contains("ch04, ch05, ch06, ch07, ch08, ch09, ch10, ch11"),
             "{error}"
         );
     }

@@ -1,0 +1,167 @@
+//! The appendix's measurement: every step of the fast path and every
+//! peer built and traced on the 235 000-triangle bunny, on the rays
+//! `raystep bench` generates (1024² camera rays, their shadow rays,
+//! 2²⁰ incoherent rays), rounds taking turns; on one thread, then the
+//! fastest steps and the peers on two.
+use std::path::Path;
+
+use ch08::{Builder, MeshBvh, NodePrecision};
+use ch11::{FastBvh, Step};
+use raystep_bench::{
+    Method, MethodReport, RaySet, compare, incoherent, on_threads_with_steps,
+    primary, shadow,
+};
+use raystep_core::DVec3;
+
+use crate::rows::StepRow;
+
+/// The mesh: `../shared/meshes/bunny-235k.obj` beside the workspace.
+pub const MESH: &str = "bunny-235k.obj";
+
+/// Step 1: chapter 8's tree as the benchmark runs it.
+pub const LECTURE: Method =
+    Method::Ours(Builder::BinnedSah { bins: 16 }, NodePrecision::Single);
+
+/// Each row's label: the step's number and name.
+pub fn label(method: &Method) -> String {
+    match method {
+        Method::Fast(step) => {
+            let number = match step {
+                Step::Ordered => "2",
+                Step::LeafLayout => "3",
+                Step::SweepTree => "4",
+                Step::Wide4Scalar => "5a",
+                Step::Wide4 => "5b",
+                Step::Wide8Scalar => "5c",
+                Step::Wide8 => "5d",
+                Step::Compressed8 => "5e",
+            };
+            format!("{number} {}", step.name())
+        }
+        m if *m == LECTURE => "1 lecture".to_string(),
+        m => m.name(),
+    }
+}
+
+/// The steps whose threads are measured too.
+const THREADED: [Step; 2] = [Step::Wide8, Step::Compressed8];
+
+/// The mesh's triangles; an error names the file.
+fn mesh() -> Result<Vec<[DVec3; 3]>, String> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../../shared/meshes")
+        .join(MESH);
+    raystep_bench::load_triangles(&path)
+        .map_err(|e| format!("{e} (the meshes live in ../shared/meshes)"))
+}
+
+/// The steps [`measure_steps`] reports: a round on one thread, then on
+/// two.
+pub fn steps(repeats: usize) -> u64 {
+    2 * repeats.max(1) as u64
+}
+
+/// Runs the comparison; an error if this raystep was built without the
+/// peers, or if one of ours answers a ray unlike the lecture's tree.
+pub fn measure_steps(
+    repeats: usize,
+    step: &mut dyn FnMut(),
+) -> Result<Vec<StepRow>, String> {
+    let peers = Method::peers();
+    if peers.is_empty() {
+        return Err("the appendix compares with obvhs, bvh and Embree: \
+             run `cargo run --release --features embree -- measure \
+             --chapter ch11`"
+            .into());
+    }
+    let triangles = mesh()?;
+    let bounds = ch09_figures::measurements::bounds(&triangles);
+    let reference = MeshBvh::new(
+        &triangles,
+        &ch08::Bvh::build(
+            &ch08::triangle_boxes(&triangles),
+            Builder::BinnedSah { bins: 16 },
+        ),
+        NodePrecision::Double,
+    );
+    let primary = primary(&bounds, 1024);
+    let shadow = shadow(&bounds, &primary, &reference);
+    let sets = [primary, shadow, incoherent(&bounds, 1 << 20, 1)];
+    let mut ours = vec![LECTURE];
+    ours.extend(Step::ALL.map(Method::Fast));
+    let mut rows = Vec::new();
+    for threads in [1, 2] {
+        let methods: Vec<Method> = if threads == 1 {
+            ours.iter().chain(&peers).copied().collect()
+        } else {
+            let fast = THREADED.map(Method::Fast);
+            [LECTURE]
+                .iter()
+                .chain(&fast)
+                .chain(&peers)
+                .copied()
+                .collect()
+        };
+        let (reports, _) = on_threads_with_steps(
+            threads,
+            |tick| {
+                compare(
+                    &triangles,
+                    &sets,
+                    &methods,
+                    repeats.max(1),
+                    &indicatif::ProgressBar::hidden(),
+                    tick,
+                )
+            },
+            step,
+        )
+        .map_err(|e| e.to_string())?;
+        for (method, mut report) in methods.iter().zip(reports) {
+            report.finish(&sets);
+            rows.push(row(&triangles, method, &report, &sets, threads)?);
+        }
+    }
+    Ok(rows)
+}
+
+/// One method's row; an error if it is ours and answers any ray unlike
+/// the lecture's tree.
+fn row(
+    triangles: &[[DVec3; 3]],
+    method: &Method,
+    report: &MethodReport,
+    sets: &[RaySet],
+    threads: usize,
+) -> Result<StepRow, String> {
+    let wrong: usize = report.sets.iter().map(|s| s.disagreements).sum();
+    if method.is_ours() && wrong > 0 {
+        return Err(format!(
+            "{} answers {wrong} rays unlike the lecture's tree",
+            method.name()
+        ));
+    }
+    let node_bytes = match method {
+        Method::Fast(step) => FastBvh::build(triangles, *step).nodes().1,
+        m if m.is_ours() => 32,
+        _ => 0,
+    };
+    let set = |k: usize| &report.sets[k];
+    debug_assert_eq!(sets.len(), 3);
+    Ok(StepRow {
+        method: label(method),
+        kind: if method.is_ours() { "ours" } else { "peer" }.into(),
+        threads: threads as u64,
+        build_ms: report.build_ms,
+        mb: report.bytes.unwrap_or(0) as f64 / 1e6,
+        node_bytes: node_bytes as u64,
+        mrays: [0, 1, 2].map(|k| set(k).mrays_per_s),
+        nodes: [0, 2].map(|k| set(k).nodes_per_ray.unwrap_or(0.0)),
+        // the peers' counts are not known (NaN): 0
+        tests: [0, 2].map(|k| {
+            let t = set(k).triangles_per_ray;
+            if t.is_finite() { t } else { 0.0 }
+        }),
+        wrong: wrong as u64,
+    })
+}

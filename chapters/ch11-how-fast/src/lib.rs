@@ -1,0 +1,35 @@
+//! Appendix — how fast can it go: chapter 8's bounding volume hierarchy
+//! made fast one measured step at a time, each step beside the others in
+//! `raystep bench` (and in the appendix's table), every one answering
+//! exactly what chapter 8's tree and brute force answer.
+//!
+//! - Step 1 is chapter 8's [`MeshBvh`](ch08::MeshBvh), unchanged.
+//! - Step 2 ([`binary`]): compact nodes walked in the ray's direction
+//!   order with an explicit stack, the ray's reciprocal once ([`ray`]).
+//! - Step 3 ([`leaf_triangles`]): the leaves' triangles in `f32`.
+//! - Step 4: a better tree (chapter 8's full-sweep SAH).
+//! - Step 5 ([`wide`]): 4- and 8-wide nodes, their boxes tested with SIMD
+//!   ([`simd4`], [`simd8`]) or one by one on any CPU; 8-wide nodes
+//!   compressed to 96 bytes ([`compressed`]).
+//!
+//! Threads (step 7) are the benchmark's `--threads`. The appendix has no
+//! exercises: it is written for engineers, after the lecture.
+#![deny(missing_docs)]
+
+pub mod binary;
+pub mod compressed;
+pub mod leaf_triangles;
+pub mod ray;
+#[cfg(target_arch = "x86_64")]
+pub mod simd4;
+#[cfg(target_arch = "x86_64")]
+pub mod simd8;
+mod steps;
+pub mod wide;
+
+pub use binary::Binary;
+pub use compressed::CompressedNode;
+pub use leaf_triangles::LeafTriangles;
+pub use ray::FastRay;
+pub use steps::{FastBvh, Kernel, Step};
+pub use wide::{Wide, WideNode};

@@ -1,0 +1,312 @@
+//! The steps of the appendix, each one row of its table: what is built,
+//! and one type that builds and traces any of them.
+use ch08::{Builder, Bvh, MeshHit, Ray32, TraceCounts, triangle_boxes};
+use raystep_core::{DVec3, Interval};
+
+use crate::binary::Binary;
+use crate::compressed::CompressedNode;
+use crate::wide::{Wide, scalar_boxes};
+
+/// One step of the way: each adds one thing to the one before it.
+/// (Step 1, the baseline, is chapter 8's [`MeshBvh`](ch08::MeshBvh).)
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Step {
+    /// 2: chapter 8's tree (binned SAH, 16 bins) in compact nodes, each
+    /// box tested when reached, children in the order the ray's
+    /// direction gives.
+    Ordered,
+    /// 3: and the leaves' triangles in `f32` (exactly), half the bytes.
+    LeafLayout,
+    /// 4: and a better tree: the full-sweep SAH of chapter 8.
+    SweepTree,
+    /// 5a: and 4-wide nodes, their boxes tested one by one.
+    Wide4Scalar,
+    /// 5b: 4-wide nodes, the four boxes tested at once with SSE.
+    Wide4,
+    /// 5c: 8-wide nodes, one by one.
+    Wide8Scalar,
+    /// 5d: 8-wide nodes, eight at once with AVX (where the CPU has it).
+    Wide8,
+    /// 5e: 8-wide nodes compressed to 96 bytes, AVX2 (where the CPU has
+    /// it).
+    Compressed8,
+}
+
+impl Step {
+    /// Every step, in order.
+    pub const ALL: [Step; 8] = [
+        Step::Ordered,
+        Step::LeafLayout,
+        Step::SweepTree,
+        Step::Wide4Scalar,
+        Step::Wide4,
+        Step::Wide8Scalar,
+        Step::Wide8,
+        Step::Compressed8,
+    ];
+
+    /// The name tables and the command line use.
+    pub fn name(self) -> &'static str {
+        match self {
+            Step::Ordered => "ordered",
+            Step::LeafLayout => "leaf-f32",
+            Step::SweepTree => "sweep-tree",
+            Step::Wide4Scalar => "bvh4-scalar",
+            Step::Wide4 => "bvh4-sse",
+            Step::Wide8Scalar => "bvh8-scalar",
+            Step::Wide8 => "bvh8-avx",
+            Step::Compressed8 => "bvh8-compressed",
+        }
+    }
+
+    /// The step named `name`.
+    pub fn from_name(name: &str) -> Option<Step> {
+        Step::ALL.into_iter().find(|s| s.name() == name)
+    }
+
+    /// The tree builder the step starts from.
+    pub fn builder(self) -> Builder {
+        match self {
+            Step::Ordered | Step::LeafLayout => Builder::BinnedSah { bins: 16 },
+            _ => Builder::SweepSah,
+        }
+    }
+}
+
+/// How the boxes of a wide node are tested.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kernel {
+    /// One box after another, on any CPU.
+    Scalar,
+    /// SSE (4 boxes), on x86-64.
+    Sse,
+    /// AVX (8 boxes), where the CPU has it.
+    Avx,
+    /// AVX2 (8 compressed boxes), where the CPU has it.
+    Avx2,
+}
+
+/// The structure a step builds.
+#[derive(Clone, Debug, PartialEq)]
+enum Built {
+    Binary(Binary),
+    Wide4(Wide<4>, Kernel),
+    Wide8(Wide<8>, Kernel),
+    Compressed8(Wide<8, CompressedNode>, Kernel),
+}
+
+/// A triangle mesh's hierarchy as one step of the appendix builds it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FastBvh {
+    built: Built,
+    step: Step,
+}
+
+impl FastBvh {
+    /// Builds `step`'s structure over `triangles`.
+    pub fn build(triangles: &[[DVec3; 3]], step: Step) -> FastBvh {
+        let tree = Bvh::build(&triangle_boxes(triangles), step.builder());
+        FastBvh::from_tree(triangles, &tree, step)
+    }
+
+    /// `step`'s structure from a tree already built.
+    pub fn from_tree(
+        triangles: &[[DVec3; 3]],
+        tree: &Bvh,
+        step: Step,
+    ) -> FastBvh {
+        let single = step != Step::Ordered;
+        let built = match step {
+            Step::Ordered | Step::LeafLayout | Step::SweepTree => {
+                Built::Binary(Binary::new(triangles, tree, single))
+            }
+            Step::Wide4Scalar | Step::Wide4 => {
+                let kernel =
+                    if step == Step::Wide4 && cfg!(target_arch = "x86_64") {
+                        Kernel::Sse
+                    } else {
+                        Kernel::Scalar
+                    };
+                Built::Wide4(Wide::new(triangles, tree, single), kernel)
+            }
+            Step::Wide8Scalar | Step::Wide8 => {
+                let kernel = if step == Step::Wide8 && avx() {
+                    Kernel::Avx
+                } else {
+                    Kernel::Scalar
+                };
+                Built::Wide8(Wide::new(triangles, tree, single), kernel)
+            }
+            Step::Compressed8 => {
+                let kernel = if avx2() { Kernel::Avx2 } else { Kernel::Scalar };
+                let wide: Wide<8> = Wide::new(triangles, tree, single);
+                Built::Compressed8(wide.map_nodes(CompressedNode::new), kernel)
+            }
+        };
+        FastBvh { built, step }
+    }
+
+    /// The same structure, its boxes tested one by one (the fallback a
+    /// CPU without SSE or AVX gets): for testing the fallback anywhere.
+    pub fn scalar(mut self) -> FastBvh {
+        match &mut self.built {
+            Built::Binary(_) => {}
+            Built::Wide4(_, k)
+            | Built::Wide8(_, k)
+            | Built::Compressed8(_, k) => {
+                *k = Kernel::Scalar;
+            }
+        }
+        self
+    }
+
+    /// The step it was built for.
+    pub fn step(&self) -> Step {
+        self.step
+    }
+
+    /// How its boxes are tested (scalar for binary trees).
+    pub fn kernel(&self) -> Kernel {
+        match &self.built {
+            Built::Binary(_) => Kernel::Scalar,
+            Built::Wide4(_, k)
+            | Built::Wide8(_, k)
+            | Built::Compressed8(_, k) => *k,
+        }
+    }
+
+    /// Nodes, and the bytes of one node.
+    pub fn nodes(&self) -> (usize, usize) {
+        match &self.built {
+            Built::Binary(b) => (b.node_count(), 32),
+            Built::Wide4(w, _) => {
+                (w.node_count(), size_of::<crate::WideNode<4>>())
+            }
+            Built::Wide8(w, _) => {
+                (w.node_count(), size_of::<crate::WideNode<8>>())
+            }
+            Built::Compressed8(w, _) => {
+                (w.node_count(), size_of::<CompressedNode>())
+            }
+        }
+    }
+
+    /// Bytes of everything a walk reads.
+    pub fn bytes(&self) -> usize {
+        match &self.built {
+            Built::Binary(b) => b.bytes(),
+            Built::Wide4(w, _) => w.bytes(),
+            Built::Wide8(w, _) => w.bytes(),
+            Built::Compressed8(w, _) => w.bytes(),
+        }
+    }
+
+    /// The closest hit within `interval`, counted (`nodes`: nodes
+    /// reached; a wide node counts once for its `W` boxes).
+    pub fn closest_hit(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> Option<MeshHit> {
+        match &self.built {
+            Built::Binary(b) => b.closest_hit(ray, interval, counts),
+            Built::Wide4(w, Kernel::Scalar) => {
+                w.closest_with(ray, interval, counts, scalar_boxes)
+            }
+            #[cfg(target_arch = "x86_64")]
+            Built::Wide4(w, _) => {
+                w.closest_with(ray, interval, counts, crate::simd4::boxes4)
+            }
+            Built::Wide8(w, Kernel::Scalar) => {
+                w.closest_with(ray, interval, counts, scalar_boxes)
+            }
+            #[cfg(target_arch = "x86_64")]
+            Built::Wide8(w, _) => {
+                // SAFETY: the kernel is Avx only where `avx()` said so.
+                unsafe { crate::simd8::closest(w, ray, interval, counts) }
+            }
+            Built::Compressed8(w, Kernel::Scalar) => w.closest_with(
+                ray,
+                interval,
+                counts,
+                crate::compressed::scalar_boxes,
+            ),
+            #[cfg(target_arch = "x86_64")]
+            Built::Compressed8(w, _) => {
+                // SAFETY: the kernel is Avx2 only where `avx2()` said so.
+                unsafe {
+                    crate::simd8::closest_compressed(w, ray, interval, counts)
+                }
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            _ => unreachable!("SIMD kernels are chosen on x86-64 only"),
+        }
+    }
+
+    /// Does anything meet the ray within `interval`?
+    pub fn any_hit(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> bool {
+        match &self.built {
+            Built::Binary(b) => b.any_hit(ray, interval, counts),
+            Built::Wide4(w, Kernel::Scalar) => {
+                w.any_with(ray, interval, counts, scalar_boxes)
+            }
+            #[cfg(target_arch = "x86_64")]
+            Built::Wide4(w, _) => {
+                w.any_with(ray, interval, counts, crate::simd4::boxes4)
+            }
+            Built::Wide8(w, Kernel::Scalar) => {
+                w.any_with(ray, interval, counts, scalar_boxes)
+            }
+            #[cfg(target_arch = "x86_64")]
+            Built::Wide8(w, _) => {
+                // SAFETY: the kernel is Avx only where `avx()` said so.
+                unsafe { crate::simd8::any(w, ray, interval, counts) }
+            }
+            Built::Compressed8(w, Kernel::Scalar) => w.any_with(
+                ray,
+                interval,
+                counts,
+                crate::compressed::scalar_boxes,
+            ),
+            #[cfg(target_arch = "x86_64")]
+            Built::Compressed8(w, _) => {
+                // SAFETY: the kernel is Avx2 only where `avx2()` said so.
+                unsafe {
+                    crate::simd8::any_compressed(w, ray, interval, counts)
+                }
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            _ => unreachable!("SIMD kernels are chosen on x86-64 only"),
+        }
+    }
+}
+
+/// Has this CPU AVX2? (Always no off x86-64.)
+fn avx2() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        crate::simd8::available_avx2()
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
+/// Has this CPU AVX? (Always no off x86-64.)
+fn avx() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        crate::simd8::available()
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}

@@ -1,0 +1,334 @@
+//! Step 5: wide nodes. The binary tree collapsed into nodes of `W`
+//! children (4 or 8), each node holding its children's boxes side by side
+//! — all the `min x`s, then all the `min y`s, … — so that one SIMD
+//! instruction tests one plane of every child at once (Wald et al. 2008,
+//! Dammertz et al. 2008; Embree's BVH4 and BVH8).
+use ch08::{Bvh, MeshHit, Ray32, TraceCounts, outward};
+use raystep_core::{DVec3, Interval};
+use smallvec::SmallVec;
+
+use crate::leaf_triangles::LeafTriangles;
+use crate::ray::{FastRay, reach, span};
+
+// ANCHOR: wide_node
+/// `W` children's boxes in structure-of-arrays form (`lo[axis][child]`),
+/// and per child either a node (`count == 0`, `child` its index) or a
+/// leaf (`count` triangles from `child`). An empty slot has an empty box
+/// (lo = +∞, hi = −∞), which no ray meets.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C, align(64))]
+pub struct WideNode<const W: usize> {
+    /// The boxes' low corners, one row per axis.
+    pub lo: [[f32; W]; 3],
+    /// The boxes' high corners.
+    pub hi: [[f32; W]; 3],
+    /// A node's index or a leaf's first triangle.
+    pub child: [u32; W],
+    /// A leaf's triangle count; 0 for a node (or an empty slot).
+    pub count: [u32; W],
+}
+// ANCHOR_END: wide_node
+
+/// What the walk asks of a wide node besides its boxes: child `i`'s
+/// link, `(child, count)` as in [`WideNode`].
+pub trait Links {
+    /// Child `i`: a node's index and 0, or a leaf's first triangle and
+    /// its count.
+    fn link(&self, i: usize) -> (u32, u32);
+}
+
+impl<const W: usize> Links for WideNode<W> {
+    #[inline(always)]
+    fn link(&self, i: usize) -> (u32, u32) {
+        (self.child[i], self.count[i])
+    }
+}
+
+/// A child as the stack holds it: a node or a leaf, and where the ray
+/// enters its box.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct Entry {
+    child: u32,
+    count: u32,
+    t: f32,
+}
+
+/// A wide BVH over a triangle mesh, its nodes of type `N` (plain boxes,
+/// or [`compressed`](crate::compressed) ones).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Wide<const W: usize, N = WideNode<W>> {
+    pub(crate) nodes: Vec<N>,
+    /// The root as a child: a node, or a leaf if the tree is one leaf.
+    root: Option<Entry>,
+    triangles: LeafTriangles,
+    ids: Vec<u32>,
+    unbounded: Vec<u32>,
+    all: Vec<[DVec3; 3]>,
+}
+
+impl<const W: usize> Wide<W> {
+    // ANCHOR: collapse
+    /// `tree` collapsed into `W`-wide nodes: each node takes its two
+    /// children, then again and again opens the child with the largest
+    /// surface area into its own two, until it has `W` children or only
+    /// leaves (the greedy collapse of Wald et al. 2008).
+    pub fn new(triangles: &[[DVec3; 3]], tree: &Bvh, single: bool) -> Self {
+        let mut nodes = Vec::new();
+        let root = tree.nodes.first().map(|root| {
+            if root.count > 0 {
+                Entry {
+                    child: root.first,
+                    count: root.count,
+                    t: 0.0,
+                }
+            } else {
+                collapse(tree, 0, &mut nodes);
+                Entry::default()
+            }
+        });
+        let ordered = tree.order.iter().map(|&i| triangles[i as usize]);
+        Wide {
+            nodes,
+            root,
+            triangles: LeafTriangles::new(ordered.collect(), single),
+            ids: tree.order.clone(),
+            unbounded: tree.unbounded.clone(),
+            all: triangles.to_vec(),
+        }
+    }
+    // ANCHOR_END: collapse
+
+    /// The same tree with each node turned into `f(node)`.
+    pub fn map_nodes<N>(self, f: impl Fn(&WideNode<W>) -> N) -> Wide<W, N> {
+        Wide {
+            nodes: self.nodes.iter().map(f).collect(),
+            root: self.root,
+            triangles: self.triangles,
+            ids: self.ids,
+            unbounded: self.unbounded,
+            all: self.all,
+        }
+    }
+}
+
+impl<const W: usize, N: Links> Wide<W, N> {
+    /// How many wide nodes.
+    pub fn node_count(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// Bytes of nodes, triangles and indices.
+    pub fn bytes(&self) -> usize {
+        self.nodes.len() * size_of::<N>()
+            + self.triangles.bytes()
+            + (self.ids.len() + self.unbounded.len()) * size_of::<u32>()
+    }
+
+    /// The closest hit (or, `any`, the first hit found) of a prepared ray,
+    /// the boxes of each node tested by `boxes`: it returns the entry `t`
+    /// of every child and a bit per child whose box the ray meets within
+    /// the span. Generic and always inlined, so that each kernel's caller
+    /// (compiled with its CPU features) gets a walk of its own.
+    #[inline(always)]
+    pub(crate) fn walk(
+        &self,
+        ray: &FastRay,
+        interval: Interval,
+        any: bool,
+        counts: &mut TraceCounts,
+        boxes: impl Fn(&N, &FastRay, (f32, f32)) -> ([f32; W], u32),
+    ) -> Option<MeshHit> {
+        let mut interval = interval;
+        let mut closest = None;
+        // Step 1: triangles outside the tree (none in a finite mesh).
+        for &id in &self.unbounded {
+            counts.triangles += 1;
+            let v = &self.all[id as usize];
+            if let Some(t) = ray.exact.triangle(v, interval) {
+                interval = interval.with_max(t);
+                closest = Some(MeshHit { triangle: id, t });
+                if any {
+                    return closest;
+                }
+            }
+        }
+        // The stack: 64 children on the call stack (not cleared for each
+        // ray), more on the heap.
+        let mut stack: SmallVec<[Entry; 64]> = SmallVec::new();
+        let mut span = span(interval);
+        stack.push(self.root?);
+        // ANCHOR: wide_walk
+        while let Some(entry) = stack.pop() {
+            // Step 2: a child entered beyond the closest hit holds
+            // nothing closer.
+            if f64::from(entry.t) > reach(interval.max) {
+                continue;
+            }
+            counts.nodes += 1;
+            if entry.count > 0 {
+                // Step 3: a leaf: its triangles, side by side.
+                let first = entry.child as usize;
+                for j in first..first + entry.count as usize {
+                    counts.triangles += 1;
+                    let hit = self.triangles.test(j, &ray.exact, interval);
+                    if let Some(t) = hit {
+                        interval = interval.with_max(t);
+                        span = crate::ray::span(interval);
+                        closest = Some(MeshHit {
+                            triangle: self.ids[j],
+                            t,
+                        });
+                        if any {
+                            return closest;
+                        }
+                    }
+                }
+                continue;
+            }
+            // Step 4: all W boxes at once; the children hit, farthest
+            // pushed first so that the nearest is taken next.
+            let node = &self.nodes[entry.child as usize];
+            let (t, mut mask) = boxes(node, ray, span);
+            let mut hit = [Entry::default(); W];
+            let mut n = 0;
+            while mask != 0 {
+                let i = mask.trailing_zeros() as usize;
+                mask &= mask - 1;
+                let (child, count) = node.link(i);
+                let e = Entry {
+                    child,
+                    count,
+                    t: t[i],
+                };
+                // insertion sort, farthest first
+                let mut j = n;
+                while j > 0 && hit[j - 1].t < e.t {
+                    hit[j] = hit[j - 1];
+                    j -= 1;
+                }
+                hit[j] = e;
+                n += 1;
+            }
+            for e in &hit[..n] {
+                // Step 5: the node's memory asked for now, used later.
+                #[cfg(target_arch = "x86_64")]
+                if e.count == 0 {
+                    crate::simd4::prefetch(&self.nodes[e.child as usize]);
+                }
+                stack.push(*e);
+            }
+        }
+        // ANCHOR_END: wide_walk
+        closest
+    }
+
+    /// The closest hit, boxes tested by `boxes` (see [`Wide::walk`]).
+    #[inline(always)]
+    pub(crate) fn closest_with(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+        boxes: impl Fn(&N, &FastRay, (f32, f32)) -> ([f32; W], u32),
+    ) -> Option<MeshHit> {
+        let ray = FastRay::new(ray)?;
+        self.walk(&ray, interval, false, counts, boxes)
+    }
+
+    /// Any hit, boxes tested by `boxes`.
+    #[inline(always)]
+    pub(crate) fn any_with(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+        boxes: impl Fn(&N, &FastRay, (f32, f32)) -> ([f32; W], u32),
+    ) -> bool {
+        FastRay::new(ray).is_some_and(|ray| {
+            self.walk(&ray, interval, true, counts, boxes).is_some()
+        })
+    }
+}
+
+/// Collapses the binary node `k` (interior) into a wide node appended to
+/// `nodes`, and its interior children after it; returns its index.
+fn collapse<const W: usize>(
+    tree: &Bvh,
+    k: usize,
+    nodes: &mut Vec<WideNode<W>>,
+) -> u32 {
+    // Step 1: open the largest interior child until W children.
+    let first = tree.nodes[k].first as usize;
+    let mut children = vec![first, first + 1];
+    while children.len() < W {
+        let open = children
+            .iter()
+            .enumerate()
+            .filter(|(_, c)| tree.nodes[**c].count == 0)
+            .max_by(|(_, a), (_, b)| {
+                let area = |c: usize| tree.nodes[c].bounds.surface_area();
+                area(**a).total_cmp(&area(**b))
+            })
+            .map(|(i, _)| i);
+        let Some(i) = open else { break };
+        let c = tree.nodes[children[i]].first as usize;
+        children.splice(i..=i, [c, c + 1]);
+    }
+    // Step 2: the node, its interior children filled in after it.
+    let index = nodes.len();
+    nodes.push(WideNode {
+        lo: [[f32::INFINITY; W]; 3],
+        hi: [[f32::NEG_INFINITY; W]; 3],
+        child: [0; W],
+        count: [0; W],
+    });
+    for (slot, &c) in children.iter().enumerate() {
+        let n = &tree.nodes[c];
+        let child = if n.count > 0 {
+            n.first
+        } else {
+            collapse(tree, c, nodes)
+        };
+        let node = &mut nodes[index];
+        for axis in 0..3 {
+            node.lo[axis][slot] = outward(n.bounds.min[axis], false);
+            node.hi[axis][slot] = outward(n.bounds.max[axis], true);
+        }
+        node.child[slot] = child;
+        node.count[slot] = n.count;
+    }
+    index as u32
+}
+
+// ANCHOR: scalar_boxes
+/// The box test of every child, one after another: the fallback for any
+/// CPU, and the reference the SIMD kernels must match bit for bit.
+#[inline(always)]
+pub fn scalar_boxes<const W: usize>(
+    node: &WideNode<W>,
+    ray: &FastRay,
+    (t_min, t_max): (f32, f32),
+) -> ([f32; W], u32) {
+    let mut near = [t_min; W];
+    let mut mask = 0;
+    #[allow(clippy::needless_range_loop)] // one child of several arrays
+    for i in 0..W {
+        let mut far = t_max;
+        for axis in 0..3 {
+            let (lo, hi) = (node.lo[axis][i], node.hi[axis][i]);
+            let (enter, exit) = if ray.negative[axis] == 1 {
+                (hi, lo)
+            } else {
+                (lo, hi)
+            };
+            let o = ray.origin[axis];
+            let t0 = (enter - o) * ray.inverse[axis];
+            let t1 = (exit - o) * ray.inverse[axis] * crate::ray::WIDEN;
+            near[i] = near[i].max(t0);
+            far = far.min(t1);
+        }
+        mask |= u32::from(near[i] <= far) << i;
+    }
+    (near, mask)
+}
+// ANCHOR_END: scalar_boxes

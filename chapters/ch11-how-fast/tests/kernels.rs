@@ -1,0 +1,143 @@
+//! The box kernels against each other: SSE and the scalar test give the
+//! same hits and entry `t`s on random nodes and rays (zero direction
+//! components, origins on planes and empty slots included), and a
+//! compressed node's boxes contain the boxes it was made from, their
+//! planes exact `f32`s, at every scale from 10⁻⁶ to 10⁷ and far from
+//! the origin.
+use ch08::{Ray32, SplitMix64};
+use ch11::wide::scalar_boxes;
+use ch11::{CompressedNode, FastRay, WideNode};
+use raystep_core::glam::Vec3;
+
+/// A random node of `W` boxes around `centre`, about `size` wide; slot
+/// `empty` (if any) left empty.
+fn node<const W: usize>(
+    random: &mut SplitMix64,
+    centre: f32,
+    size: f32,
+    empty: Option<usize>,
+) -> WideNode<W> {
+    let mut node = WideNode {
+        lo: [[f32::INFINITY; W]; 3],
+        hi: [[f32::NEG_INFINITY; W]; 3],
+        child: [0; W],
+        count: [1; W],
+    };
+    for i in 0..W {
+        if Some(i) == empty {
+            continue;
+        }
+        for axis in 0..3 {
+            let a = centre + size * (random.next_f64() as f32 - 0.5);
+            let b = a + size * 0.5 * random.next_f64() as f32;
+            node.lo[axis][i] = a;
+            node.hi[axis][i] = b;
+        }
+    }
+    node
+}
+
+/// A random ray near the node: some directions with zero (±0)
+/// components, some origins exactly on a box's plane.
+fn ray<const W: usize>(
+    random: &mut SplitMix64,
+    node: &WideNode<W>,
+    centre: f32,
+    size: f32,
+) -> Ray32 {
+    let mut origin = Vec3::from_array(
+        [0; 3].map(|_| centre + 2.0 * size * (random.next_f64() as f32 - 0.5)),
+    );
+    let mut direction = random.unit_vector().as_vec3();
+    match random.next_u64() % 4 {
+        0 => direction.x = 0.0,
+        1 => direction.y = -0.0,
+        2 => origin.z = node.lo[2][0],
+        _ => {}
+    }
+    if random.next_u64().is_multiple_of(8) {
+        origin.x = node.hi[0][0];
+        direction.x = 0.0;
+    }
+    Ray32 { origin, direction }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn sse_and_scalar_agree() {
+    let mut random = SplitMix64::new(5);
+    let mut tested = 0;
+    for k in 0..4000 {
+        let (centre, size) =
+            ([0.0, 1e3, -1e7][k % 3], [1e-3, 1.0, 100.0][k % 3]);
+        let empty = (k % 5 == 0).then_some(k % 4);
+        let node: WideNode<4> = node(&mut random, centre, size, empty);
+        let Some(ray) = FastRay::new(&ray(&mut random, &node, centre, size))
+        else {
+            continue;
+        };
+        for span in [(0.0, f32::INFINITY), (0.0, size), (size, 2.0 * size)] {
+            let (t_scalar, hit_scalar) = scalar_boxes(&node, &ray, span);
+            let (t_sse, hit_sse) = ch11::simd4::boxes4(&node, &ray, span);
+            assert_eq!(hit_sse, hit_scalar, "case {k}");
+            for i in 0..4 {
+                if hit_scalar >> i & 1 == 1 {
+                    assert_eq!(t_sse[i], t_scalar[i], "case {k}, box {i}");
+                }
+            }
+            tested += 1;
+        }
+    }
+    assert!(tested > 10_000, "{tested}");
+}
+
+#[test]
+fn compressed_boxes_contain_the_originals() {
+    let mut random = SplitMix64::new(9);
+    for k in 0..3000 {
+        let size = 10f32.powi((k % 14) as i32 - 6);
+        let centre = [0.0, 1.0, -3e3, 1e7][k % 4];
+        let empty = (k % 3 == 0).then_some(k % 8);
+        let node: WideNode<8> = node(&mut random, centre, size, empty);
+        let q = CompressedNode::new(&node);
+        for i in 0..8 {
+            let exists = Some(i) != empty;
+            assert_eq!(q.valid >> i & 1 == 1, exists, "case {k}");
+            if !exists {
+                continue;
+            }
+            let [lo, hi] = q.decoded(i);
+            for axis in 0..3 {
+                assert!(lo[axis] <= node.lo[axis][i], "case {k}: {lo:?}");
+                assert!(hi[axis] >= node.hi[axis][i], "case {k}: {hi:?}");
+                // exact: the f32 sum is the real one
+                let s = 2f64.powi(i32::from(q.exponent[axis]));
+                let real =
+                    f64::from(q.qlo[axis][i]) * s + f64::from(q.origin[axis]);
+                assert_eq!(f64::from(lo[axis]), real, "case {k}");
+            }
+        }
+    }
+}
+
+#[test]
+fn compressed_boxes_stay_tight_for_boxes_of_similar_size() {
+    // the point of compressing: children of a node are not much smaller
+    // than the node, and then a byte per plane loses little
+    let mut random = SplitMix64::new(3);
+    let mut growth: f64 = 0.0;
+    for _ in 0..500 {
+        let node: WideNode<8> = node(&mut random, 0.3, 0.1, None);
+        let q = CompressedNode::new(&node);
+        for i in 0..8 {
+            let [lo, hi] = q.decoded(i);
+            for axis in 0..3 {
+                let width = f64::from(node.hi[axis][i] - node.lo[axis][i]);
+                let grown = f64::from(hi[axis] - lo[axis]) - width;
+                growth = growth.max(grown / 0.1);
+            }
+        }
+    }
+    // two lattice steps of a node 0.15 wide at most: ≤ 2 · 2⁻⁸ of it
+    assert!(growth < 0.02, "boxes grew by {growth} of the node's size");
+}
