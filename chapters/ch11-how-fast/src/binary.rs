@@ -95,7 +95,7 @@ impl Binary {
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
-        let ray = FastRay::new(ray)?;
+        let ray = FastRay::new(ray, self.triangles.lecture())?;
         self.walk(&ray, interval, false, counts)
     }
 
@@ -106,7 +106,7 @@ impl Binary {
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> bool {
-        FastRay::new(ray).is_some_and(|ray| {
+        FastRay::new(ray, self.triangles.lecture()).is_some_and(|ray| {
             self.walk(&ray, interval, true, counts).is_some()
         })
     }
@@ -126,7 +126,8 @@ impl Binary {
         for &id in &self.unbounded {
             counts.triangles += 1;
             let v = &self.all[id as usize];
-            if let Some(t) = ray.exact.triangle(v, interval) {
+            if let Some(t) = crate::leaf_triangles::watertight(v, ray, interval)
+            {
                 interval = interval.with_max(t);
                 closest = Some(MeshHit { triangle: id, t });
                 if any {
@@ -161,7 +162,7 @@ impl Binary {
                 let first = node.first as usize;
                 for j in first..first + node.meta as usize {
                     counts.triangles += 1;
-                    let hit = self.triangles.test(j, &ray.exact, interval);
+                    let hit = self.triangles.test(j, ray, interval);
                     if let Some(t) = hit {
                         interval = interval.with_max(t);
                         span = crate::ray::span(interval);

@@ -1,33 +1,43 @@
-//! Step 3: the leaves' triangles laid out for the test. Side by side in
-//! leaf order (as chapter 8 already has them), and in `f32` when that
-//! loses nothing: every corner of a mesh read from an OBJ file is an
-//! `f32`, so 36 bytes per triangle hold exactly what chapter 8's 72 do.
-//! The test widens them back to `f64` (exactly) and runs chapter 8's
-//! watertight test unchanged: the same answer, bit for bit, from half the
-//! memory traffic.
+//! Step 3: the leaves' triangles laid out for the test, and the test
+//! made for the walk. Side by side in leaf order (as chapter 8 already
+//! has them), and in `f32` when that loses nothing: every corner of a
+//! mesh read from an OBJ file is an `f32`, so 36 bytes per triangle hold
+//! exactly what chapter 8's 72 do. The test widens them back to `f64`
+//! (exactly) and runs chapter 8's watertight test — its common case
+//! inlined here, every other case handed to chapter 8's own code: the
+//! same answer, bit for bit.
 use ch08::PreparedRay;
-use raystep_core::{DVec3, Interval};
+use raystep_core::{DVec2, DVec3, Interval};
+
+use crate::ray::FastRay;
 
 /// The triangles of the leaves, in leaf order.
 #[derive(Clone, Debug, PartialEq)]
 pub enum LeafTriangles {
-    /// Corners in `f64`, as chapter 8 stores them.
+    /// Corners in `f64` and chapter 8's test, as chapter 8 has them (step
+    /// 2).
+    Lecture(Vec<[DVec3; 3]>),
+    /// Corners in `f64` (some are not `f32`s), the inlined test.
     Double(Vec<[DVec3; 3]>),
-    /// Corners in `f32`: only when each is exactly an `f32`.
+    /// Corners in `f32` (each exactly an `f32`), the inlined test.
     Single(Vec<[f32; 9]>),
 }
 
 impl LeafTriangles {
     // ANCHOR: leaf_triangles
-    /// `triangles` (in leaf order) in `f32` if `single` is asked for and
-    /// every coordinate is exactly an `f32`; in `f64` otherwise.
-    pub fn new(triangles: Vec<[DVec3; 3]>, single: bool) -> LeafTriangles {
+    /// `triangles` (in leaf order) as chapter 8 has them, or (`step3`)
+    /// in `f32` if every coordinate is exactly an `f32` (else in `f64`)
+    /// with the inlined test.
+    pub fn new(triangles: Vec<[DVec3; 3]>, step3: bool) -> LeafTriangles {
+        if !step3 {
+            return LeafTriangles::Lecture(triangles);
+        }
         let exact = |x: f64| f64::from(x as f32) == x || x.is_nan();
         let fits = triangles
             .iter()
             .flatten()
             .all(|p| p.to_array().into_iter().all(exact));
-        if !(single && fits) {
+        if !fits {
             return LeafTriangles::Double(triangles);
         }
         LeafTriangles::Single(
@@ -53,15 +63,19 @@ impl LeafTriangles {
 
     /// Chapter 8's watertight test of triangle `k`: its `t` within
     /// `interval`.
-    #[inline]
+    #[inline(always)]
     pub fn test(
         &self,
         k: usize,
-        ray: &PreparedRay,
+        ray: &FastRay,
         interval: Interval,
     ) -> Option<f64> {
         match self {
-            LeafTriangles::Double(v) => ray.triangle(&v[k], interval),
+            LeafTriangles::Lecture(v) => match &ray.exact {
+                Some(exact) => exact.triangle(&v[k], interval),
+                None => PreparedRay::new(&ray.ray).triangle(&v[k], interval),
+            },
+            LeafTriangles::Double(v) => watertight(&v[k], ray, interval),
             LeafTriangles::Single(v) => {
                 let v = &v[k];
                 let corner = |i: usize| {
@@ -71,7 +85,8 @@ impl LeafTriangles {
                         f64::from(v[i + 2]),
                     )
                 };
-                ray.triangle(&[corner(0), corner(3), corner(6)], interval)
+                let corners = [corner(0), corner(3), corner(6)];
+                watertight(&corners, ray, interval)
             }
         }
     }
@@ -80,9 +95,14 @@ impl LeafTriangles {
     /// How many triangles.
     pub fn len(&self) -> usize {
         match self {
-            LeafTriangles::Double(v) => v.len(),
+            LeafTriangles::Lecture(v) | LeafTriangles::Double(v) => v.len(),
             LeafTriangles::Single(v) => v.len(),
         }
+    }
+
+    /// Does the walk prepare chapter 8's test for each ray?
+    pub fn lecture(&self) -> bool {
+        matches!(self, LeafTriangles::Lecture(_))
     }
 
     /// No triangles?
@@ -93,8 +113,60 @@ impl LeafTriangles {
     /// Their bytes.
     pub fn bytes(&self) -> usize {
         match self {
-            LeafTriangles::Double(v) => v.len() * size_of::<[DVec3; 3]>(),
+            LeafTriangles::Lecture(v) | LeafTriangles::Double(v) => {
+                v.len() * size_of::<[DVec3; 3]>()
+            }
             LeafTriangles::Single(v) => v.len() * size_of::<[f32; 9]>(),
         }
     }
 }
+
+// ANCHOR: watertight
+/// Chapter 8's watertight test of the triangle `v`, the same arithmetic in
+/// the same order, inlined into the walk. Its one slow part, the exact
+/// edge function where the fast one is within rounding of 0, is left to
+/// chapter 8: a triangle for which that matters (no two edge functions
+/// surely of opposite signs, one of them unsure) goes to
+/// [`PreparedRay::triangle`] whole.
+#[inline(always)]
+pub fn watertight(
+    v: &[DVec3; 3],
+    ray: &FastRay,
+    interval: Interval,
+) -> Option<f64> {
+    // Step 1: the corners sheared (chapter 8's steps 1–3).
+    let [kx, ky, kz] = ray.axes;
+    let s = ray.shear;
+    let [(a, za), (b, zb), (c, zc)] = v.map(|vertex| {
+        let p = vertex - ray.origin64;
+        let xy = DVec2::new(p[kx] - s.x * p[kz], p[ky] - s.y * p[kz]);
+        (xy, s.z * p[kz])
+    });
+    // Step 2: the fast edge functions, and whether each sign is sure.
+    let edge = |p: DVec2, q: DVec2| {
+        let (left, right) = (p.x * q.y, p.y * q.x);
+        let fast = left - right;
+        let sure = fast.abs() > 2.0 * f64::EPSILON * (left.abs() + right.abs());
+        (fast, sure)
+    };
+    let [(e0, s0), (e1, s1), (e2, s2)] = [edge(b, c), edge(c, a), edge(a, b)];
+    // Step 3: two sure signs that differ: outside, whatever the third.
+    let positive = (s0 && e0 > 0.0) || (s1 && e1 > 0.0) || (s2 && e2 > 0.0);
+    let negative = (s0 && e0 < 0.0) || (s1 && e1 < 0.0) || (s2 && e2 < 0.0);
+    if positive && negative {
+        return None;
+    }
+    if !(s0 && s1 && s2) {
+        // Step 4: an unsure sign: chapter 8's exact test decides.
+        return PreparedRay::new(&ray.ray).triangle(v, interval);
+    }
+    // Step 5: all three sure and of one sign (none is 0): t, as chapter
+    // 8 computes it.
+    let det = e0 + e1 + e2;
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    let t = (e0 * za + e1 * zb + e2 * zc) / det;
+    interval.contains(t).then_some(t)
+}
+// ANCHOR_END: watertight

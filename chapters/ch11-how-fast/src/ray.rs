@@ -2,7 +2,7 @@
 //! once per ray — the box test's origin, reciprocal direction and which
 //! planes it enters through, and the watertight test's shear.
 use ch08::{PreparedRay, Ray32, outward};
-use raystep_core::Interval;
+use raystep_core::{DVec3, Interval};
 
 /// γ₃ for `f32`: a slab's exit widened by 1 + 2γ₃ never loses a box the
 /// ray touches (Ize, JCGT 2013; chapter 8, part 1).
@@ -20,24 +20,46 @@ pub struct FastRay {
     /// Per axis, 1 if the ray goes toward −axis: then it enters a box
     /// through the box's max plane.
     pub negative: [usize; 3],
-    /// Chapter 8's watertight test, prepared (its shear in `f64`).
-    pub exact: PreparedRay,
+    /// The watertight test's origin, axes and shear, in `f64`, computed
+    /// as chapter 8's [`PreparedRay`](ch08::PreparedRay) computes them.
+    pub origin64: DVec3,
+    /// kx, ky, kz: kz the axis the ray goes along most.
+    pub axes: [usize; 3],
+    /// The shear that takes the direction to (0, 0, 1).
+    pub shear: DVec3,
+    /// The ray itself (for the rare triangle the fast test hands to
+    /// chapter 8's).
+    pub ray: Ray32,
+    /// Chapter 8's test, prepared, for step 2 (which keeps it).
+    pub exact: Option<PreparedRay>,
 }
 
 impl FastRay {
     /// `None` for a ray with a NaN, an infinity or a zero direction: it
     /// is answered "no hit" without being traced, as chapter 8 does.
-    #[inline]
-    pub fn new(ray: &Ray32) -> Option<FastRay> {
+    /// With chapter 8's test prepared too if `lecture`.
+    #[inline(always)]
+    pub fn new(ray: &Ray32, lecture: bool) -> Option<FastRay> {
         if !ray.is_valid() {
             return None;
         }
         let inverse = ray.direction.to_array().map(|x| 1.0 / x);
+        // The watertight test's steps 1 and 2, as chapter 8 does them.
+        let d = ray.direction.as_dvec3();
+        let kz = d.abs().max_position();
+        let (mut kx, mut ky) = ((kz + 1) % 3, (kz + 2) % 3);
+        if d[kz] < 0.0 {
+            std::mem::swap(&mut kx, &mut ky);
+        }
         Some(FastRay {
             origin: ray.origin.to_array(),
             inverse,
             negative: inverse.map(|x| usize::from(x.is_sign_negative())),
-            exact: PreparedRay::new(ray),
+            origin64: ray.origin.as_dvec3(),
+            axes: [kx, ky, kz],
+            shear: DVec3::new(d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]),
+            ray: *ray,
+            exact: lecture.then(|| PreparedRay::new(ray)),
         })
     }
 }
@@ -50,12 +72,4 @@ pub fn span(interval: Interval) -> (f32, f32) {
         outward(interval.min, false),
         outward(interval.max, true) * WIDEN,
     )
-}
-
-/// The farthest entry `t` a box test lets through for an interval ending
-/// at `t_max`: a box popped later that starts beyond it holds nothing
-/// closer (the `f32` widening, and the entry's rounding back to `f64`).
-#[inline]
-pub fn reach(t_max: f64) -> f64 {
-    t_max * (1.0 + 4.0 * f64::from(GAMMA3))
 }

@@ -8,7 +8,7 @@ use raystep_core::{DVec3, Interval};
 use smallvec::SmallVec;
 
 use crate::leaf_triangles::LeafTriangles;
-use crate::ray::{FastRay, reach, span};
+use crate::ray::{FastRay, span};
 
 // ANCHOR: wide_node
 /// `W` children's boxes in structure-of-arrays form (`lo[axis][child]`),
@@ -144,7 +144,8 @@ impl<const W: usize, N: Links> Wide<W, N> {
         for &id in &self.unbounded {
             counts.triangles += 1;
             let v = &self.all[id as usize];
-            if let Some(t) = ray.exact.triangle(v, interval) {
+            if let Some(t) = crate::leaf_triangles::watertight(v, ray, interval)
+            {
                 interval = interval.with_max(t);
                 closest = Some(MeshHit { triangle: id, t });
                 if any {
@@ -156,21 +157,28 @@ impl<const W: usize, N: Links> Wide<W, N> {
         // ray), more on the heap.
         let mut stack: SmallVec<[Entry; 64]> = SmallVec::new();
         let mut span = span(interval);
-        stack.push(self.root?);
+        // The nearest child hit goes straight on, the others wait.
+        let mut next = Some(self.root?);
         // ANCHOR: wide_walk
-        while let Some(entry) = stack.pop() {
-            // Step 2: a child entered beyond the closest hit holds
-            // nothing closer.
-            if f64::from(entry.t) > reach(interval.max) {
-                continue;
-            }
+        loop {
+            let entry = match next.take() {
+                Some(entry) => entry,
+                None => match stack.pop() {
+                    // Step 2: a child entered beyond the closest hit
+                    // holds nothing closer (the bound its box test used,
+                    // now shorter).
+                    Some(entry) if entry.t > span.1 => continue,
+                    Some(entry) => entry,
+                    None => break,
+                },
+            };
             counts.nodes += 1;
             if entry.count > 0 {
                 // Step 3: a leaf: its triangles, side by side.
                 let first = entry.child as usize;
                 for j in first..first + entry.count as usize {
                     counts.triangles += 1;
-                    let hit = self.triangles.test(j, &ray.exact, interval);
+                    let hit = self.triangles.test(j, ray, interval);
                     if let Some(t) = hit {
                         interval = interval.with_max(t);
                         span = crate::ray::span(interval);
@@ -185,8 +193,9 @@ impl<const W: usize, N: Links> Wide<W, N> {
                 }
                 continue;
             }
-            // Step 4: all W boxes at once; the children hit, farthest
-            // pushed first so that the nearest is taken next.
+            // Step 4: all W boxes at once; the children hit, sorted
+            // farthest first: the nearest is taken next, the others
+            // pushed.
             let node = &self.nodes[entry.child as usize];
             let (t, mut mask) = boxes(node, ray, span);
             let mut hit = [Entry::default(); W];
@@ -209,14 +218,19 @@ impl<const W: usize, N: Links> Wide<W, N> {
                 hit[j] = e;
                 n += 1;
             }
-            for e in &hit[..n] {
-                // Step 5: the node's memory asked for now, used later.
+            let Some((nearest, others)) = hit[..n].split_last() else {
+                continue;
+            };
+            for e in others {
+                // Step 5: a waiting node's memory asked for now, used
+                // later.
                 #[cfg(target_arch = "x86_64")]
                 if e.count == 0 {
                     crate::simd4::prefetch(&self.nodes[e.child as usize]);
                 }
                 stack.push(*e);
             }
+            next = Some(*nearest);
         }
         // ANCHOR_END: wide_walk
         closest
@@ -231,7 +245,7 @@ impl<const W: usize, N: Links> Wide<W, N> {
         counts: &mut TraceCounts,
         boxes: impl Fn(&N, &FastRay, (f32, f32)) -> ([f32; W], u32),
     ) -> Option<MeshHit> {
-        let ray = FastRay::new(ray)?;
+        let ray = FastRay::new(ray, self.triangles.lecture())?;
         self.walk(&ray, interval, false, counts, boxes)
     }
 
@@ -244,7 +258,7 @@ impl<const W: usize, N: Links> Wide<W, N> {
         counts: &mut TraceCounts,
         boxes: impl Fn(&N, &FastRay, (f32, f32)) -> ([f32; W], u32),
     ) -> bool {
-        FastRay::new(ray).is_some_and(|ray| {
+        FastRay::new(ray, self.triangles.lecture()).is_some_and(|ray| {
             self.walk(&ray, interval, true, counts, boxes).is_some()
         })
     }

@@ -72,7 +72,8 @@ fn sse_and_scalar_agree() {
             ([0.0, 1e3, -1e7][k % 3], [1e-3, 1.0, 100.0][k % 3]);
         let empty = (k % 5 == 0).then_some(k % 4);
         let node: WideNode<4> = node(&mut random, centre, size, empty);
-        let Some(ray) = FastRay::new(&ray(&mut random, &node, centre, size))
+        let Some(ray) =
+            FastRay::new(&ray(&mut random, &node, centre, size), false)
         else {
             continue;
         };
@@ -140,4 +141,54 @@ fn compressed_boxes_stay_tight_for_boxes_of_similar_size() {
     }
     // two lattice steps of a node 0.15 wide at most: ≤ 2 · 2⁻⁸ of it
     assert!(growth < 0.02, "boxes grew by {growth} of the node's size");
+}
+
+#[test]
+fn the_inlined_test_is_chapter_8s_bit_for_bit() {
+    // rays at random points, and exactly at corners and edge midpoints
+    // (where the fast edge function is unsure and chapter 8's exact one
+    // decides), over triangles large, tiny, far away and edge-on
+    let mut random = SplitMix64::new(21);
+    let mut hits = 0;
+    let mut cases = 0;
+    for k in 0..20_000 {
+        let scale = [1.0, 1e-4, 1e3][k % 3];
+        let offset = [0.0, 1e5, -7.0][k % 3];
+        let corner = |random: &mut SplitMix64| {
+            let p = random.unit_vector() * scale + offset;
+            p.as_vec3().as_dvec3() // exactly f32s, as a mesh's
+        };
+        let v = [
+            corner(&mut random),
+            corner(&mut random),
+            corner(&mut random),
+        ];
+        let target = match k % 4 {
+            0 => v[k % 3],
+            1 => 0.5 * (v[0] + v[1]),
+            _ => {
+                let (a, b) = (random.next_f64(), random.next_f64());
+                v[0] + a * (v[1] - v[0]) + b * (1.0 - a) * (v[2] - v[0])
+            }
+        };
+        let eye = target + random.unit_vector() * 3.0 * scale;
+        let ray = Ray32 {
+            origin: eye.as_vec3(),
+            direction: (target - eye).as_vec3(),
+        };
+        let Some(fast) = FastRay::new(&ray, false) else {
+            continue;
+        };
+        let interval = raystep_core::Interval::new(0.0, f64::INFINITY);
+        let ours = ch11::leaf_triangles::watertight(&v, &fast, interval);
+        let theirs = ch08::watertight(&v, &ray.to_ray(), interval);
+        assert_eq!(
+            ours.map(f64::to_bits),
+            theirs.map(f64::to_bits),
+            "case {k}"
+        );
+        hits += usize::from(ours.is_some());
+        cases += 1;
+    }
+    assert!(cases > 19_000 && hits > 5_000, "{cases} cases, {hits} hits");
 }
