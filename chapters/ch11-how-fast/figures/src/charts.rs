@@ -8,8 +8,10 @@ use raystep_figure::{ChartError, Figure, chart, font, measured};
 
 use crate::rows::StepRow;
 
-/// Embree's colour (Okabe and Ito's reddish purple).
+/// Embree's colour (Okabe and Ito's reddish purple), and a darker one
+/// for its robust mode.
 const PURPLE: RGBColor = RGBColor(204, 121, 167);
+const DARK_PURPLE: RGBColor = RGBColor(120, 50, 100);
 
 /// A peer's colour, by the start of its name.
 fn peer_colour(name: &str) -> RGBColor {
@@ -17,6 +19,8 @@ fn peer_colour(name: &str) -> RGBColor {
         ORANGE
     } else if name.starts_with("obvhs CwBvh") {
         GREEN
+    } else if name.starts_with("Embree") && name.ends_with("robust") {
+        DARK_PURPLE
     } else if name.starts_with("Embree") {
         PURPLE
     } else {
@@ -123,13 +127,14 @@ pub fn steps_chart() -> Result<Figure, ChartError> {
                 points.iter().map(|&p| Circle::new(p, 6, BLUE.filled())),
             )?;
             c.draw_series(points.iter().map(|&(x, y)| {
-                Text::new(
-                    format!("{y:.2}"),
-                    (x, y),
-                    font(13.0)
-                        .color(&BLACK)
-                        .pos(Pos::new(HPos::Center, VPos::Bottom)),
-                )
+                EmptyElement::at((x, y))
+                    + Text::new(
+                        format!("{y:.2}"),
+                        (0, -9),
+                        font(13.0)
+                            .color(&BLACK)
+                            .pos(Pos::new(HPos::Center, VPos::Bottom)),
+                    )
             }))?;
         }
         Ok(())
