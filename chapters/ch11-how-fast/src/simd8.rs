@@ -62,6 +62,17 @@ unsafe fn boxes8(
 }
 // ANCHOR_END: boxes8
 
+/// [`boxes8`] where this CPU has AVX, `None` elsewhere: for the tests
+/// that hold it to the scalar kernel.
+pub fn boxes8_where_available(
+    node: &WideNode<8>,
+    ray: &FastRay,
+    span: (f32, f32),
+) -> Option<([f32; 8], u32)> {
+    // SAFETY: called only after the CPU said it has AVX.
+    available().then(|| unsafe { boxes8(node, ray, span) })
+}
+
 /// The closest hit, the walk compiled with AVX.
 ///
 /// # Safety
@@ -156,6 +167,17 @@ unsafe fn compressed_boxes8(
     }
 }
 // ANCHOR_END: compressed_boxes8
+
+/// [`compressed_boxes8`] where this CPU has AVX2, `None` elsewhere: for
+/// the tests that hold it to the scalar kernel.
+pub fn compressed_boxes8_where_available(
+    node: &CompressedNode,
+    ray: &FastRay,
+    span: (f32, f32),
+) -> Option<([f32; 8], u32)> {
+    // SAFETY: called only after the CPU said it has AVX2.
+    available_avx2().then(|| unsafe { compressed_boxes8(node, ray, span) })
+}
 
 /// The closest hit in a compressed tree, the walk compiled with AVX2.
 ///

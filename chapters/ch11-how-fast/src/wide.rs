@@ -153,13 +153,13 @@ impl<const W: usize, N: Links> Wide<W, N> {
                 }
             }
         }
+        // ANCHOR: wide_walk
         // The stack: 64 children on the call stack (not cleared for each
         // ray), more on the heap.
         let mut stack: SmallVec<[Entry; 64]> = SmallVec::new();
         let mut span = span(interval);
         // The nearest child hit goes straight on, the others wait.
         let mut next = Some(self.root?);
-        // ANCHOR: wide_walk
         loop {
             let entry = match next.take() {
                 Some(entry) => entry,

@@ -92,6 +92,57 @@ fn sse_and_scalar_agree() {
     assert!(tested > 10_000, "{tested}");
 }
 
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn avx_avx2_and_scalar_agree() {
+    use ch11::compressed::scalar_boxes as compressed_scalar;
+    use ch11::simd8::{
+        boxes8_where_available, compressed_boxes8_where_available,
+    };
+    let mut random = SplitMix64::new(6);
+    let mut tested = 0;
+    for k in 0..4000 {
+        let (centre, size) =
+            ([0.0, 1e3, -1e7][k % 3], [1e-3, 1.0, 100.0][k % 3]);
+        let empty = (k % 5 == 0).then_some(k % 8);
+        let node: WideNode<8> = node(&mut random, centre, size, empty);
+        let compressed = CompressedNode::new(&node);
+        let Some(ray) =
+            FastRay::new(&ray(&mut random, &node, centre, size), false)
+        else {
+            continue;
+        };
+        for span in [(0.0, f32::INFINITY), (0.0, size), (size, 2.0 * size)] {
+            let pairs = [
+                (
+                    scalar_boxes(&node, &ray, span),
+                    boxes8_where_available(&node, &ray, span),
+                ),
+                (
+                    compressed_scalar(&compressed, &ray, span),
+                    compressed_boxes8_where_available(&compressed, &ray, span),
+                ),
+            ];
+            for ((t_scalar, hit_scalar), simd) in pairs {
+                let Some((t_simd, hit_simd)) = simd else {
+                    continue; // no AVX here: nothing to compare
+                };
+                assert_eq!(hit_simd, hit_scalar, "case {k}");
+                for i in 0..8 {
+                    if hit_scalar >> i & 1 == 1 {
+                        assert_eq!(t_simd[i], t_scalar[i], "case {k}, box {i}");
+                    }
+                }
+                tested += 1;
+            }
+        }
+    }
+    // where the CPU has AVX2 (it has AVX then too), every case compared
+    if ch11::simd8::available_avx2() {
+        assert!(tested > 20_000, "{tested}");
+    }
+}
+
 #[test]
 fn compressed_boxes_contain_the_originals() {
     let mut random = SplitMix64::new(9);

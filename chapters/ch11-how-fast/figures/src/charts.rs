@@ -30,9 +30,9 @@ fn peer_colour(name: &str) -> RGBColor {
 
 /// The three ray sets, as the panels name them.
 const SETS: [&str; 3] = [
-    "primary (1024² camera rays)",
-    "shadow (any hit)",
-    "incoherent (2²⁰ rays)",
+    "primary (1024² = 1 048 576 camera rays)",
+    "shadow (442 061 rays, any hit)",
+    "incoherent (2²⁰ = 1 048 576 rays)",
 ];
 
 /// Mrays/s per step and ray set on one thread; the peers as horizontal
