@@ -7,7 +7,8 @@
 //! - Step 2 ([`binary`]): compact nodes walked in the ray's direction
 //!   order with an explicit stack, the ray's reciprocal once ([`ray`]).
 //! - Step 3 ([`leaf_triangles`]): the leaves' triangles in `f32`.
-//! - Step 4: a better tree (chapter 8's full-sweep SAH).
+//! - Step 4: a better tree? (chapter 8's full-sweep SAH; a side step:
+//!   the wide steps collapse the binned tree, 5f and 5g the sweep's).
 //! - Step 5 ([`wide`]): 4- and 8-wide nodes, their boxes tested with SIMD
 //!   ([`simd4`], [`simd8`]) or one by one on any CPU; 8-wide nodes
 //!   compressed to 96 bytes ([`compressed`]).

@@ -17,7 +17,8 @@ pub enum Step {
     Ordered,
     /// 3: and the leaves' triangles in `f32` (exactly), half the bytes.
     LeafLayout,
-    /// 4: and a better tree: the full-sweep SAH of chapter 8.
+    /// 4: and a better tree: the full-sweep SAH of chapter 8 (a side
+    /// step: the steps after it go back to the binned tree).
     SweepTree,
     /// 5a: and 4-wide nodes, their boxes tested one by one.
     Wide4Scalar,
@@ -30,11 +31,15 @@ pub enum Step {
     /// 5e: 8-wide nodes compressed to 96 bytes, AVX2 (where the CPU has
     /// it).
     Compressed8,
+    /// 5f: 5d on step 4's full-sweep tree (a slower build).
+    Wide8Sweep,
+    /// 5g: 5e on step 4's full-sweep tree.
+    Compressed8Sweep,
 }
 
 impl Step {
     /// Every step, in order.
-    pub const ALL: [Step; 8] = [
+    pub const ALL: [Step; 10] = [
         Step::Ordered,
         Step::LeafLayout,
         Step::SweepTree,
@@ -43,6 +48,8 @@ impl Step {
         Step::Wide8Scalar,
         Step::Wide8,
         Step::Compressed8,
+        Step::Wide8Sweep,
+        Step::Compressed8Sweep,
     ];
 
     /// The name tables and the command line use.
@@ -56,6 +63,8 @@ impl Step {
             Step::Wide8Scalar => "bvh8-scalar",
             Step::Wide8 => "bvh8-avx",
             Step::Compressed8 => "bvh8-compressed",
+            Step::Wide8Sweep => "bvh8-avx-sweep",
+            Step::Compressed8Sweep => "bvh8-compressed-sweep",
         }
     }
 
@@ -64,11 +73,15 @@ impl Step {
         Step::ALL.into_iter().find(|s| s.name() == name)
     }
 
-    /// The tree builder the step starts from.
+    /// The tree builder the step starts from: chapter 8's binned SAH,
+    /// but the full sweep for step 4 and for 5f and 5g (the wide steps
+    /// on its tree: its build is 4–5 times as long).
     pub fn builder(self) -> Builder {
         match self {
-            Step::Ordered | Step::LeafLayout => Builder::BinnedSah { bins: 16 },
-            _ => Builder::SweepSah,
+            Step::SweepTree | Step::Wide8Sweep | Step::Compressed8Sweep => {
+                Builder::SweepSah
+            }
+            _ => Builder::BinnedSah { bins: 16 },
         }
     }
 }
@@ -129,15 +142,15 @@ impl FastBvh {
                     };
                 Built::Wide4(Wide::new(triangles, tree, single), kernel)
             }
-            Step::Wide8Scalar | Step::Wide8 => {
-                let kernel = if step == Step::Wide8 && avx() {
+            Step::Wide8Scalar | Step::Wide8 | Step::Wide8Sweep => {
+                let kernel = if step != Step::Wide8Scalar && avx() {
                     Kernel::Avx
                 } else {
                     Kernel::Scalar
                 };
                 Built::Wide8(Wide::new(triangles, tree, single), kernel)
             }
-            Step::Compressed8 => {
+            Step::Compressed8 | Step::Compressed8Sweep => {
                 let kernel = if avx2() { Kernel::Avx2 } else { Kernel::Scalar };
                 let wide: Wide<8> = Wide::new(triangles, tree, single);
                 Built::Compressed8(wide.map_nodes(CompressedNode::new), kernel)

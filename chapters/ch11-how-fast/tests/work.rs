@@ -50,7 +50,7 @@ fn the_work_of_each_step() {
         .map(Ray32::rounded)
         .collect();
     let mut table = String::from(
-        "step            nodes  B/node  camera: nodes tests  incoherent: nodes tests\n",
+        "step                   nodes  B/node  camera: nodes tests  incoherent: nodes tests\n",
     );
     let mut row = |name: &str,
                    nodes: usize,
@@ -59,7 +59,7 @@ fn the_work_of_each_step() {
                    i: (f64, f64)| {
         writeln!(
             table,
-            "{name:<15} {nodes:>5} {bytes:>7} {:>14.2} {:>5.2} {:>18.2} {:>5.2}",
+            "{name:<22} {nodes:>5} {bytes:>7} {:>14.2} {:>5.2} {:>18.2} {:>5.2}",
             c.0, c.1, i.0, i.1
         )
         .unwrap();

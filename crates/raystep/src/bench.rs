@@ -83,6 +83,10 @@ pub enum FastArg {
     /// 8-wide nodes compressed to 96 bytes, AVX2 (one by one where the
     /// CPU lacks it).
     Bvh8Compressed,
+    /// `bvh8-avx` on the full-sweep tree.
+    Bvh8AvxSweep,
+    /// `bvh8-compressed` on the full-sweep tree.
+    Bvh8CompressedSweep,
 }
 
 impl FastArg {
@@ -97,6 +101,8 @@ impl FastArg {
             FastArg::Bvh8Scalar => ch11::Step::Wide8Scalar,
             FastArg::Bvh8Avx => ch11::Step::Wide8,
             FastArg::Bvh8Compressed => ch11::Step::Compressed8,
+            FastArg::Bvh8AvxSweep => ch11::Step::Wide8Sweep,
+            FastArg::Bvh8CompressedSweep => ch11::Step::Compressed8Sweep,
         }
     }
 }

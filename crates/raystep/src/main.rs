@@ -211,7 +211,7 @@ enum Command {
             long,
             value_enum,
             value_delimiter = ',',
-            default_value = "ordered,leaf-f32,sweep-tree,bvh4-scalar,bvh4-sse,bvh8-scalar,bvh8-avx,bvh8-compressed"
+            default_value = "ordered,leaf-f32,sweep-tree,bvh4-scalar,bvh4-sse,bvh8-scalar,bvh8-avx,bvh8-compressed,bvh8-avx-sweep,bvh8-compressed-sweep"
         )]
         fast: Vec<bench::FastArg>,
         /// Also run obvhs (Bvh2, CwBvh) and bvh on the same input, and

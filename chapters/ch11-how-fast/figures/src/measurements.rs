@@ -35,6 +35,8 @@ pub fn label(method: &Method) -> String {
                 Step::Wide8Scalar => "5c",
                 Step::Wide8 => "5d",
                 Step::Compressed8 => "5e",
+                Step::Wide8Sweep => "5f",
+                Step::Compressed8Sweep => "5g",
             };
             format!("{number} {}", step.name())
         }
@@ -44,7 +46,7 @@ pub fn label(method: &Method) -> String {
 }
 
 /// The steps whose threads are measured too.
-const THREADED: [Step; 2] = [Step::Wide8, Step::Compressed8];
+const THREADED: [Step; 2] = [Step::Wide8Sweep, Step::Compressed8Sweep];
 
 /// The mesh's triangles; an error names the file.
 fn mesh() -> Result<Vec<[DVec3; 3]>, String> {
