@@ -11,7 +11,7 @@ use ch08::{Bvh, MeshHit, Ray32, TraceCounts, outward};
 use raystep_core::{Aabb, DVec3, Interval};
 use smallvec::SmallVec;
 
-use crate::leaf_triangles::LeafTriangles;
+use crate::leaf_triangles::{LeafTriangles, Outside};
 use crate::ray::{FastRay, WIDEN, span};
 
 /// `meta`'s high bit: an interior node (its low bits: the split axis, and
@@ -39,9 +39,8 @@ pub struct Binary {
     /// The triangles in leaf order, and each one's index in the mesh.
     triangles: LeafTriangles,
     ids: Vec<u32>,
-    /// Triangles with no finite box (tested by every ray), in the mesh.
-    unbounded: Vec<u32>,
-    all: Vec<[DVec3; 3]>,
+    /// Triangles with no finite box, tested by every ray first.
+    outside: Outside,
 }
 
 impl Binary {
@@ -71,8 +70,7 @@ impl Binary {
             nodes,
             triangles: LeafTriangles::new(ordered.collect(), single),
             ids: tree.order.clone(),
-            unbounded: tree.unbounded.clone(),
-            all: triangles.to_vec(),
+            outside: Outside::new(triangles, &tree.unbounded),
         }
     }
 
@@ -85,7 +83,8 @@ impl Binary {
     pub fn bytes(&self) -> usize {
         self.nodes.len() * size_of::<Node>()
             + self.triangles.bytes()
-            + (self.ids.len() + self.unbounded.len()) * size_of::<u32>()
+            + self.ids.len() * size_of::<u32>()
+            + self.outside.bytes()
     }
 
     /// The closest hit within `interval`, counted.
@@ -120,21 +119,12 @@ impl Binary {
         any: bool,
         counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
-        let mut interval = interval;
-        let mut closest = None;
         // Step 1: triangles outside the tree (none in a finite mesh).
-        for &id in &self.unbounded {
-            counts.triangles += 1;
-            let v = &self.all[id as usize];
-            if let Some(t) = crate::leaf_triangles::watertight(v, ray, interval)
-            {
-                interval = interval.with_max(t);
-                closest = Some(MeshHit { triangle: id, t });
-                if any {
-                    return closest;
-                }
-            }
+        let mut closest = self.outside.closest(ray, interval, any, counts);
+        if any && closest.is_some() {
+            return closest;
         }
+        let mut interval = closest.map_or(interval, |h| interval.with_max(h.t));
         if self.nodes.is_empty() {
             return closest;
         }

@@ -6,7 +6,7 @@
 //! (exactly) and runs chapter 8's watertight test — its common case
 //! inlined here, every other case handed to chapter 8's own code: the
 //! same answer, bit for bit.
-use ch08::PreparedRay;
+use ch08::{MeshHit, PreparedRay, TraceCounts};
 use raystep_core::{DVec2, DVec3, Interval};
 
 use crate::ray::FastRay;
@@ -170,3 +170,46 @@ pub fn watertight(
     interval.contains(t).then_some(t)
 }
 // ANCHOR_END: watertight
+
+/// The triangles kept outside a tree (no finite box: a corner at ±∞ or
+/// NaN), with their indices in the mesh; every ray tests them first.
+/// None in a finite mesh.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Outside(pub Vec<(u32, [DVec3; 3])>);
+
+impl Outside {
+    /// The mesh's triangles numbered `ids`.
+    pub fn new(triangles: &[[DVec3; 3]], ids: &[u32]) -> Outside {
+        Outside(ids.iter().map(|&k| (k, triangles[k as usize])).collect())
+    }
+
+    /// Step 1 of every walk: the closest of them within `interval` (or,
+    /// `any`, the first), counted.
+    #[inline(always)]
+    pub fn closest(
+        &self,
+        ray: &FastRay,
+        interval: Interval,
+        any: bool,
+        counts: &mut TraceCounts,
+    ) -> Option<MeshHit> {
+        let mut interval = interval;
+        let mut closest = None;
+        for (id, v) in &self.0 {
+            counts.triangles += 1;
+            if let Some(t) = watertight(v, ray, interval) {
+                interval = interval.with_max(t);
+                closest = Some(MeshHit { triangle: *id, t });
+                if any {
+                    break;
+                }
+            }
+        }
+        closest
+    }
+
+    /// Their bytes.
+    pub fn bytes(&self) -> usize {
+        self.0.len() * size_of::<(u32, [DVec3; 3])>()
+    }
+}

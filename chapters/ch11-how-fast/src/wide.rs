@@ -7,7 +7,7 @@ use ch08::{Bvh, MeshHit, Ray32, TraceCounts, outward};
 use raystep_core::{DVec3, Interval};
 use smallvec::SmallVec;
 
-use crate::leaf_triangles::LeafTriangles;
+use crate::leaf_triangles::{LeafTriangles, Outside};
 use crate::ray::{FastRay, span};
 
 // ANCHOR: wide_node
@@ -62,8 +62,7 @@ pub struct Wide<const W: usize, N = WideNode<W>> {
     root: Option<Entry>,
     triangles: LeafTriangles,
     ids: Vec<u32>,
-    unbounded: Vec<u32>,
-    all: Vec<[DVec3; 3]>,
+    outside: Outside,
 }
 
 impl<const W: usize> Wide<W> {
@@ -92,8 +91,7 @@ impl<const W: usize> Wide<W> {
             root,
             triangles: LeafTriangles::new(ordered.collect(), single),
             ids: tree.order.clone(),
-            unbounded: tree.unbounded.clone(),
-            all: triangles.to_vec(),
+            outside: Outside::new(triangles, &tree.unbounded),
         }
     }
     // ANCHOR_END: collapse
@@ -105,8 +103,7 @@ impl<const W: usize> Wide<W> {
             root: self.root,
             triangles: self.triangles,
             ids: self.ids,
-            unbounded: self.unbounded,
-            all: self.all,
+            outside: self.outside,
         }
     }
 }
@@ -121,7 +118,8 @@ impl<const W: usize, N: Links> Wide<W, N> {
     pub fn bytes(&self) -> usize {
         self.nodes.len() * size_of::<N>()
             + self.triangles.bytes()
-            + (self.ids.len() + self.unbounded.len()) * size_of::<u32>()
+            + self.ids.len() * size_of::<u32>()
+            + self.outside.bytes()
     }
 
     /// The closest hit (or, `any`, the first hit found) of a prepared ray,
@@ -138,21 +136,12 @@ impl<const W: usize, N: Links> Wide<W, N> {
         counts: &mut TraceCounts,
         boxes: impl Fn(&N, &FastRay, (f32, f32)) -> ([f32; W], u32),
     ) -> Option<MeshHit> {
-        let mut interval = interval;
-        let mut closest = None;
         // Step 1: triangles outside the tree (none in a finite mesh).
-        for &id in &self.unbounded {
-            counts.triangles += 1;
-            let v = &self.all[id as usize];
-            if let Some(t) = crate::leaf_triangles::watertight(v, ray, interval)
-            {
-                interval = interval.with_max(t);
-                closest = Some(MeshHit { triangle: id, t });
-                if any {
-                    return closest;
-                }
-            }
+        let mut closest = self.outside.closest(ray, interval, any, counts);
+        if any && closest.is_some() {
+            return closest;
         }
+        let mut interval = closest.map_or(interval, |h| interval.with_max(h.t));
         // ANCHOR: wide_walk
         // The stack: 64 children on the call stack (not cleared for each
         // ray), more on the heap.

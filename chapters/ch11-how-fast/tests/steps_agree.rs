@@ -223,7 +223,15 @@ fn a_deep_tree_and_tiny_scenes_work() {
     }
     let one = vec![deep[0]];
     let empty: Vec<[DVec3; 3]> = Vec::new();
-    for scene in [&deep, &one, &empty] {
+    // a triangle with no finite box, kept outside the tree: a plane-like
+    // sliver reaching to infinity across the rays
+    let mut outside = deep[..20].to_vec();
+    outside.push([
+        DVec3::new(0.5, -1.0, -1.0),
+        DVec3::new(0.5, 1.0, -1.0),
+        DVec3::new(0.5, 0.0, f64::INFINITY),
+    ]);
+    for scene in [&deep, &one, &empty, &outside] {
         let truth = truth(scene, &rays);
         for step in Step::ALL {
             let wrong = disagreements(scene, step, &rays, &truth);
