@@ -21,6 +21,9 @@ pub enum LeafTriangles {
     Double(Vec<[DVec3; 3]>),
     /// Corners in `f32` (each exactly an `f32`), the inlined test.
     Single(Vec<[f32; 9]>),
+    /// As `Single`, laid out for step 6's test, three edges at once.
+    #[cfg(target_arch = "x86_64")]
+    Lanes(Vec<crate::simd_triangle::TriangleLanes>),
 }
 
 impl LeafTriangles {
@@ -88,15 +91,35 @@ impl LeafTriangles {
                 let corners = [corner(0), corner(3), corner(6)];
                 watertight(&corners, ray, interval)
             }
+            #[cfg(target_arch = "x86_64")]
+            LeafTriangles::Lanes(v) => {
+                crate::simd_triangle::watertight_lanes(&v[k], ray, interval)
+            }
         }
     }
     // ANCHOR_END: leaf_triangles
+
+    /// Step 6: `f32` triangles laid out for the test with SIMD, where the
+    /// CPU has AVX2 (the same triangles elsewhere).
+    pub fn with_lanes(self) -> LeafTriangles {
+        #[cfg(target_arch = "x86_64")]
+        if let LeafTriangles::Single(v) = &self {
+            use crate::simd_triangle::TriangleLanes;
+            let lanes = v.iter().map(TriangleLanes::new).collect();
+            if let Some(lanes) = lanes {
+                return LeafTriangles::Lanes(lanes);
+            }
+        }
+        self
+    }
 
     /// How many triangles.
     pub fn len(&self) -> usize {
         match self {
             LeafTriangles::Lecture(v) | LeafTriangles::Double(v) => v.len(),
             LeafTriangles::Single(v) => v.len(),
+            #[cfg(target_arch = "x86_64")]
+            LeafTriangles::Lanes(v) => v.len(),
         }
     }
 
@@ -117,6 +140,10 @@ impl LeafTriangles {
                 v.len() * size_of::<[DVec3; 3]>()
             }
             LeafTriangles::Single(v) => v.len() * size_of::<[f32; 9]>(),
+            #[cfg(target_arch = "x86_64")]
+            LeafTriangles::Lanes(v) => {
+                v.len() * size_of::<crate::simd_triangle::TriangleLanes>()
+            }
         }
     }
 }

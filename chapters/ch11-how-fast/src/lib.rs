@@ -7,24 +7,33 @@
 //! - Step 2 ([`binary`]): compact nodes walked in the ray's direction
 //!   order with an explicit stack, the ray's reciprocal once ([`ray`]).
 //! - Step 3 ([`leaf_triangles`]): the leaves' triangles in `f32`.
-//! - Step 4: a better tree? (chapter 8's full-sweep SAH; a side step:
-//!   the wide steps collapse the binned tree, 5f and 5g the sweep's).
+//! - Step 4: a better tree? (chapter 8's full-sweep SAH, or 4b, tree
+//!   rotations ([`rotations`]); side steps: the wide steps collapse the
+//!   binned tree, 5f and 5g the sweep's).
 //! - Step 5 ([`wide`]): 4- and 8-wide nodes, their boxes tested with SIMD
 //!   ([`simd4`], [`simd8`]) or one by one on any CPU; 8-wide nodes
 //!   compressed to 96 bytes ([`compressed`]).
+//! - Step 6 ([`simd_triangle`]): each triangle's three edges tested at
+//!   once (AVX2).
+//! - Step 7: threads, for tracing (the benchmark's `--threads`) and for
+//!   the build ([`parallel_build`]).
 //!
-//! Threads (step 7) are the benchmark's `--threads`. The appendix has no
-//! exercises: it is written for engineers, after the lecture.
+//! The appendix has no exercises: it is written for engineers, after the
+//! lecture.
 #![deny(missing_docs)]
 
 pub mod binary;
 pub mod compressed;
 pub mod leaf_triangles;
+pub mod parallel_build;
 pub mod ray;
+pub mod rotations;
 #[cfg(target_arch = "x86_64")]
 pub mod simd4;
 #[cfg(target_arch = "x86_64")]
 pub mod simd8;
+#[cfg(target_arch = "x86_64")]
+pub mod simd_triangle;
 mod steps;
 pub mod wide;
 

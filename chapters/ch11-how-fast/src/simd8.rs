@@ -106,6 +106,40 @@ pub fn any(
     tree.any_with(ray, interval, counts, |n, r, s| unsafe { boxes8(n, r, s) })
 }
 
+/// The closest hit, the walk compiled with AVX2: [`closest`] for step
+/// 6, whose triangle test needs AVX2
+/// ([`simd_triangle`](crate::simd_triangle)).
+///
+/// # Safety
+/// The CPU must have AVX2 ([`available_avx2`]).
+#[target_feature(enable = "avx2")]
+pub fn closest_avx2(
+    tree: &Wide<8>,
+    ray: &Ray32,
+    interval: Interval,
+    counts: &mut TraceCounts,
+) -> Option<MeshHit> {
+    // SAFETY: as in `closest` (AVX2 includes AVX).
+    tree.closest_with(ray, interval, counts, |n, r, s| unsafe {
+        boxes8(n, r, s)
+    })
+}
+
+/// Any hit, the walk compiled with AVX2 (see [`closest_avx2`]).
+///
+/// # Safety
+/// The CPU must have AVX2 ([`available_avx2`]).
+#[target_feature(enable = "avx2")]
+pub fn any_avx2(
+    tree: &Wide<8>,
+    ray: &Ray32,
+    interval: Interval,
+    counts: &mut TraceCounts,
+) -> bool {
+    // SAFETY: as in `closest`.
+    tree.any_with(ray, interval, counts, |n, r, s| unsafe { boxes8(n, r, s) })
+}
+
 /// Does this CPU have what the compressed nodes' kernel needs (AVX2, to
 /// widen bytes to eight 32-bit lanes)?
 pub fn available_avx2() -> bool {

@@ -20,6 +20,8 @@ pub enum Step {
     /// 4: and a better tree: the full-sweep SAH of chapter 8 (a side
     /// step: the steps after it go back to the binned tree).
     SweepTree,
+    /// 4b: step 3's tree improved by tree rotations (another side step).
+    RotatedTree,
     /// 5a: and 4-wide nodes, their boxes tested one by one.
     Wide4Scalar,
     /// 5b: 4-wide nodes, the four boxes tested at once with SSE.
@@ -35,14 +37,25 @@ pub enum Step {
     Wide8Sweep,
     /// 5g: 5e on step 4's full-sweep tree.
     Compressed8Sweep,
+    /// 6a: 5d, and each triangle's three edges tested at once (AVX2,
+    /// where the CPU has it).
+    Wide8Triangles,
+    /// 6b: 5e, and each triangle's three edges tested at once.
+    Compressed8Triangles,
+    /// 7a: 6a, its tree built on the threads of the current rayon pool
+    /// ([`build_parallel`](crate::parallel_build::build_parallel)).
+    Wide8Parallel,
+    /// 7b: 6b, its tree built on the pool's threads.
+    Compressed8Parallel,
 }
 
 impl Step {
     /// Every step, in order.
-    pub const ALL: [Step; 10] = [
+    pub const ALL: [Step; 15] = [
         Step::Ordered,
         Step::LeafLayout,
         Step::SweepTree,
+        Step::RotatedTree,
         Step::Wide4Scalar,
         Step::Wide4,
         Step::Wide8Scalar,
@@ -50,6 +63,10 @@ impl Step {
         Step::Compressed8,
         Step::Wide8Sweep,
         Step::Compressed8Sweep,
+        Step::Wide8Triangles,
+        Step::Compressed8Triangles,
+        Step::Wide8Parallel,
+        Step::Compressed8Parallel,
     ];
 
     /// The name tables and the command line use.
@@ -58,6 +75,7 @@ impl Step {
             Step::Ordered => "ordered",
             Step::LeafLayout => "leaf-f32",
             Step::SweepTree => "sweep-tree",
+            Step::RotatedTree => "rotated-tree",
             Step::Wide4Scalar => "bvh4-scalar",
             Step::Wide4 => "bvh4-sse",
             Step::Wide8Scalar => "bvh8-scalar",
@@ -65,6 +83,10 @@ impl Step {
             Step::Compressed8 => "bvh8-compressed",
             Step::Wide8Sweep => "bvh8-avx-sweep",
             Step::Compressed8Sweep => "bvh8-compressed-sweep",
+            Step::Wide8Triangles => "bvh8-avx-tri",
+            Step::Compressed8Triangles => "bvh8-compressed-tri",
+            Step::Wide8Parallel => "bvh8-par",
+            Step::Compressed8Parallel => "bvh8-compressed-par",
         }
     }
 
@@ -95,7 +117,8 @@ pub enum Kernel {
     Sse,
     /// AVX (8 boxes), where the CPU has it.
     Avx,
-    /// AVX2 (8 compressed boxes), where the CPU has it.
+    /// AVX2, where the CPU has it: 8 boxes, compressed or not, the walk
+    /// compiled with AVX2 (which step 6's triangle test needs).
     Avx2,
 }
 
@@ -118,11 +141,23 @@ pub struct FastBvh {
 impl FastBvh {
     /// Builds `step`'s structure over `triangles`.
     pub fn build(triangles: &[[DVec3; 3]], step: Step) -> FastBvh {
-        let tree = Bvh::build(&triangle_boxes(triangles), step.builder());
+        let boxes = triangle_boxes(triangles);
+        let tree = match step {
+            Step::RotatedTree => {
+                let mut tree = Bvh::build(&boxes, step.builder());
+                crate::rotations::rotate(&mut tree);
+                tree
+            }
+            Step::Wide8Parallel | Step::Compressed8Parallel => {
+                crate::parallel_build::build_parallel(&boxes, 16)
+            }
+            _ => Bvh::build(&boxes, step.builder()),
+        };
         FastBvh::from_tree(triangles, &tree, step)
     }
 
-    /// `step`'s structure from a tree already built.
+    /// `step`'s structure from a tree already built (and, for step 4b,
+    /// already rotated).
     pub fn from_tree(
         triangles: &[[DVec3; 3]],
         tree: &Bvh,
@@ -130,7 +165,10 @@ impl FastBvh {
     ) -> FastBvh {
         let single = step != Step::Ordered;
         let built = match step {
-            Step::Ordered | Step::LeafLayout | Step::SweepTree => {
+            Step::Ordered
+            | Step::LeafLayout
+            | Step::SweepTree
+            | Step::RotatedTree => {
                 Built::Binary(Binary::new(triangles, tree, single))
             }
             Step::Wide4Scalar | Step::Wide4 => {
@@ -150,9 +188,29 @@ impl FastBvh {
                 };
                 Built::Wide8(Wide::new(triangles, tree, single), kernel)
             }
-            Step::Compressed8 | Step::Compressed8Sweep => {
-                let kernel = if avx2() { Kernel::Avx2 } else { Kernel::Scalar };
+            Step::Wide8Triangles | Step::Wide8Parallel => {
+                let kernel = if avx2() {
+                    Kernel::Avx2
+                } else if avx() {
+                    Kernel::Avx
+                } else {
+                    Kernel::Scalar
+                };
                 let wide: Wide<8> = Wide::new(triangles, tree, single);
+                Built::Wide8(wide.with_lanes(), kernel)
+            }
+            Step::Compressed8
+            | Step::Compressed8Sweep
+            | Step::Compressed8Triangles
+            | Step::Compressed8Parallel => {
+                let kernel = if avx2() { Kernel::Avx2 } else { Kernel::Scalar };
+                let mut wide: Wide<8> = Wide::new(triangles, tree, single);
+                if matches!(
+                    step,
+                    Step::Compressed8Triangles | Step::Compressed8Parallel
+                ) {
+                    wide = wide.with_lanes();
+                }
                 Built::Compressed8(wide.map_nodes(CompressedNode::new), kernel)
             }
         };
@@ -235,6 +293,11 @@ impl FastBvh {
                 w.closest_with(ray, interval, counts, scalar_boxes)
             }
             #[cfg(target_arch = "x86_64")]
+            Built::Wide8(w, Kernel::Avx2) => {
+                // SAFETY: the kernel is Avx2 only where `avx2()` said so.
+                unsafe { crate::simd8::closest_avx2(w, ray, interval, counts) }
+            }
+            #[cfg(target_arch = "x86_64")]
             Built::Wide8(w, _) => {
                 // SAFETY: the kernel is Avx only where `avx()` said so.
                 unsafe { crate::simd8::closest(w, ray, interval, counts) }
@@ -275,6 +338,11 @@ impl FastBvh {
             }
             Built::Wide8(w, Kernel::Scalar) => {
                 w.any_with(ray, interval, counts, scalar_boxes)
+            }
+            #[cfg(target_arch = "x86_64")]
+            Built::Wide8(w, Kernel::Avx2) => {
+                // SAFETY: the kernel is Avx2 only where `avx2()` said so.
+                unsafe { crate::simd8::any_avx2(w, ray, interval, counts) }
             }
             #[cfg(target_arch = "x86_64")]
             Built::Wide8(w, _) => {

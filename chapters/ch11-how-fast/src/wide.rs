@@ -96,6 +96,13 @@ impl<const W: usize> Wide<W> {
     }
     // ANCHOR_END: collapse
 
+    /// Step 6: the same tree, its triangles tested three edges at once
+    /// where the CPU can.
+    pub fn with_lanes(mut self) -> Self {
+        self.triangles = self.triangles.with_lanes();
+        self
+    }
+
     /// The same tree with each node turned into `f(node)`.
     pub fn map_nodes<N>(self, f: impl Fn(&WideNode<W>) -> N) -> Wide<W, N> {
         Wide {

@@ -202,6 +202,7 @@ fn the_inlined_test_is_chapter_8s_bit_for_bit() {
     let mut random = SplitMix64::new(21);
     let mut hits = 0;
     let mut cases = 0;
+    let mut simd_cases = 0;
     for k in 0..20_000 {
         let scale = [1.0, 1e-4, 1e3][k % 3];
         let offset = [0.0, 1e5, -7.0][k % 3];
@@ -238,8 +239,50 @@ fn the_inlined_test_is_chapter_8s_bit_for_bit() {
             theirs.map(f64::to_bits),
             "case {k}"
         );
+        // step 6's test, three edges at once (where the CPU has AVX2)
+        simd_cases += usize::from(three_edges_at_once(&v, &fast, theirs, k));
         hits += usize::from(ours.is_some());
         cases += 1;
     }
     assert!(cases > 19_000 && hits > 5_000, "{cases} cases, {hits} hits");
+    if simd_cases == 0 {
+        eprintln!("no AVX2 here: step 6's test not compared");
+    } else {
+        assert_eq!(simd_cases, cases);
+    }
+}
+
+/// Step 6's test of `v` gives chapter 8's answer `theirs` bit for bit
+/// (asserted); false where the CPU has no AVX2 (not compared).
+#[cfg(target_arch = "x86_64")]
+fn three_edges_at_once(
+    v: &[raystep_core::DVec3; 3],
+    ray: &FastRay,
+    theirs: Option<f64>,
+    case: usize,
+) -> bool {
+    use ch11::simd_triangle::{TriangleLanes, watertight_lanes};
+    let corners: [f32; 9] = std::array::from_fn(|i| v[i / 3][i % 3] as f32);
+    let Some(lanes) = TriangleLanes::new(&corners) else {
+        return false;
+    };
+    assert_eq!(&lanes.corners(), v, "case {case}");
+    let interval = raystep_core::Interval::new(0.0, f64::INFINITY);
+    let ours = watertight_lanes(&lanes, ray, interval);
+    assert_eq!(
+        ours.map(f64::to_bits),
+        theirs.map(f64::to_bits),
+        "case {case}, three edges at once"
+    );
+    true
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+fn three_edges_at_once(
+    _: &[raystep_core::DVec3; 3],
+    _: &FastRay,
+    _: Option<f64>,
+    _: usize,
+) -> bool {
+    false
 }

@@ -3,7 +3,9 @@
 //! be the same `t`s exactly): on the bunny's camera and incoherent rays,
 //! as closest-hit and any-hit questions; on rays aimed at every shared
 //! edge of three surfaces (none may leak); and on rays that are not rays.
-use std::path::Path;
+mod common;
+
+use common::{agree, bunny};
 
 use ch08::{
     BoundingSphere, Builder, Bvh, EDGE_REACH, Interval, MeshBvh, MeshHit,
@@ -13,18 +15,6 @@ use ch08::{
 use ch11::{FastBvh, Step};
 use raystep_core::glam::Vec3;
 use raystep_core::{Aabb, DVec3};
-use raystep_scene::Mesh;
-
-fn bunny() -> Vec<[DVec3; 3]> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/meshes/bunny.obj");
-    let mesh = Mesh::load_obj(&path).unwrap_or_else(|e| {
-        panic!("{e} (the bunny lives in ../shared/meshes beside the workspace)")
-    });
-    (0..mesh.triangles.len())
-        .map(|k| mesh.triangle(k))
-        .collect()
-}
 
 fn rays(triangles: &[[DVec3; 3]]) -> Vec<Ray32> {
     let bounds = Aabb::around(triangles.iter().flatten().copied());
@@ -34,15 +24,6 @@ fn rays(triangles: &[[DVec3; 3]]) -> Vec<Ray32> {
         .chain(&incoherent_rays(bounds, 2000, 11))
         .map(Ray32::rounded)
         .collect()
-}
-
-/// Both miss, or both hit at the same `t`.
-fn agree(a: Option<MeshHit>, b: Option<MeshHit>) -> bool {
-    match (a, b) {
-        (None, None) => true,
-        (Some(a), Some(b)) => a.t == b.t,
-        _ => false,
-    }
 }
 
 /// Brute force's answers to `rays`: the closest hit, and whether
@@ -197,16 +178,7 @@ fn rays_that_are_not_rays_hit_nothing() {
 fn a_deep_tree_and_tiny_scenes_work() {
     // 300 slivers, each 0.9 times the last, along x: the SAH peels them
     // off one by one, a tree far deeper than the walks' fixed stacks.
-    let deep: Vec<[DVec3; 3]> = (0..300)
-        .map(|k| {
-            let x = 0.9f64.powi(k);
-            [
-                DVec3::new(x, -1.0, 0.0),
-                DVec3::new(x, 1.0, -1.0),
-                DVec3::new(x, 1.0, 1.0),
-            ]
-        })
-        .collect();
+    let deep: Vec<[DVec3; 3]> = common::slivers();
     let tree = Bvh::build(&triangle_boxes(&deep), Builder::SweepSah);
     assert!(tree.depth() > 64, "depth {}", tree.depth());
     let mut rays = Vec::new();

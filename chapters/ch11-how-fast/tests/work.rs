@@ -1,29 +1,22 @@
 //! What each step changes in the work a ray costs, counted (not timed)
 //! on the bunny: nodes, bytes per node, nodes reached and triangle
 //! tests per camera ray and per incoherent ray. A reviewable table: the
-//! layout steps (2, 3) keep the tree; the sweep (4) changes it a little;
-//! wide nodes (5) cut the nodes reached by about W/2.
+//! layout steps (2, 3) keep the tree; the sweep (4) and the rotations
+//! (4b) change it a little; wide nodes (5) cut the nodes reached by about
+//! W/2; the triangle test (6) and the parallel build (7, the same tree
+//! here) change no count.
+mod common;
+
+use common::bunny;
+
 use std::fmt::Write;
-use std::path::Path;
 
 use ch08::{
     BoundingSphere, Builder, Bvh, Interval, MeshBvh, NodePrecision, Ray32,
     TraceCounts, camera_rays, incoherent_rays, triangle_boxes,
 };
 use ch11::{FastBvh, Step};
-use raystep_core::{Aabb, DVec3};
-use raystep_scene::Mesh;
-
-fn bunny() -> Vec<[DVec3; 3]> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/meshes/bunny.obj");
-    let mesh = Mesh::load_obj(&path).unwrap_or_else(|e| {
-        panic!("{e} (the bunny lives in ../shared/meshes beside the workspace)")
-    });
-    (0..mesh.triangles.len())
-        .map(|k| mesh.triangle(k))
-        .collect()
-}
+use raystep_core::Aabb;
 
 /// Nodes reached and triangle tests per ray, over `rays`.
 fn per_ray(

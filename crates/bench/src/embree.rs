@@ -257,10 +257,12 @@ struct Device {
 
 impl Device {
     fn new(api: &'static Api) -> Result<Device, String> {
-        // "threads=1": Embree builds on one thread, as ours and the other
-        // peers do. (Tracing runs on the bench's threads regardless.)
+        // "threads=N": Embree builds on as many threads as the bench's
+        // pool has (`--threads`), as the appendix's parallel build does.
+        // (Tracing runs on the bench's threads regardless.)
+        let config = format!("threads={}\0", rayon::current_num_threads());
         // SAFETY: a NUL-terminated string, only read during the call.
-        let raw = unsafe { (api.new_device)(c"threads=1".as_ptr()) };
+        let raw = unsafe { (api.new_device)(config.as_ptr().cast()) };
         if raw.is_null() {
             // SAFETY: a null device asks for the error of creating one.
             let code = unsafe { (api.get_device_error)(std::ptr::null_mut()) };

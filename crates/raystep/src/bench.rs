@@ -72,6 +72,8 @@ pub enum FastArg {
     LeafF32,
     /// Step 4: and the full-sweep SAH tree.
     SweepTree,
+    /// Step 4b: step 3's tree improved by tree rotations.
+    RotatedTree,
     /// Step 5: 4-wide nodes, boxes tested one by one.
     Bvh4Scalar,
     /// 4-wide nodes, SSE.
@@ -87,6 +89,14 @@ pub enum FastArg {
     Bvh8AvxSweep,
     /// `bvh8-compressed` on the full-sweep tree.
     Bvh8CompressedSweep,
+    /// Step 6: `bvh8-avx`, each triangle's edges tested at once (AVX2).
+    Bvh8AvxTri,
+    /// `bvh8-compressed`, each triangle's edges tested at once.
+    Bvh8CompressedTri,
+    /// Step 7: `bvh8-avx-tri`, its tree built on `--threads` threads.
+    Bvh8Par,
+    /// `bvh8-compressed-tri`, its tree built on `--threads` threads.
+    Bvh8CompressedPar,
 }
 
 impl FastArg {
@@ -96,6 +106,7 @@ impl FastArg {
             FastArg::Ordered => ch11::Step::Ordered,
             FastArg::LeafF32 => ch11::Step::LeafLayout,
             FastArg::SweepTree => ch11::Step::SweepTree,
+            FastArg::RotatedTree => ch11::Step::RotatedTree,
             FastArg::Bvh4Scalar => ch11::Step::Wide4Scalar,
             FastArg::Bvh4Sse => ch11::Step::Wide4,
             FastArg::Bvh8Scalar => ch11::Step::Wide8Scalar,
@@ -103,6 +114,10 @@ impl FastArg {
             FastArg::Bvh8Compressed => ch11::Step::Compressed8,
             FastArg::Bvh8AvxSweep => ch11::Step::Wide8Sweep,
             FastArg::Bvh8CompressedSweep => ch11::Step::Compressed8Sweep,
+            FastArg::Bvh8AvxTri => ch11::Step::Wide8Triangles,
+            FastArg::Bvh8CompressedTri => ch11::Step::Compressed8Triangles,
+            FastArg::Bvh8Par => ch11::Step::Wide8Parallel,
+            FastArg::Bvh8CompressedPar => ch11::Step::Compressed8Parallel,
         }
     }
 }

@@ -30,6 +30,7 @@ pub fn label(method: &Method) -> String {
                 Step::Ordered => "2",
                 Step::LeafLayout => "3",
                 Step::SweepTree => "4",
+                Step::RotatedTree => "4b",
                 Step::Wide4Scalar => "5a",
                 Step::Wide4 => "5b",
                 Step::Wide8Scalar => "5c",
@@ -37,6 +38,10 @@ pub fn label(method: &Method) -> String {
                 Step::Compressed8 => "5e",
                 Step::Wide8Sweep => "5f",
                 Step::Compressed8Sweep => "5g",
+                Step::Wide8Triangles => "6a",
+                Step::Compressed8Triangles => "6b",
+                Step::Wide8Parallel => "7a",
+                Step::Compressed8Parallel => "7b",
             };
             format!("{number} {}", step.name())
         }
@@ -45,8 +50,9 @@ pub fn label(method: &Method) -> String {
     }
 }
 
-/// The steps whose threads are measured too.
-const THREADED: [Step; 2] = [Step::Wide8Sweep, Step::Compressed8Sweep];
+/// The steps whose threads are measured too (tracing, and the build
+/// on the pool's threads).
+const THREADED: [Step; 2] = [Step::Wide8Parallel, Step::Compressed8Parallel];
 
 /// The mesh's triangles; an error names the file.
 fn mesh() -> Result<Vec<[DVec3; 3]>, String> {
