@@ -206,12 +206,13 @@ enum Command {
         )]
         kd_clip: Vec<bench::ClipArg>,
         /// The appendix's steps to run with `--accel fast`,
-        /// comma-separated.
+        /// comma-separated (all of them by default).
         #[arg(
             long,
             value_enum,
             value_delimiter = ',',
-            default_value = "ordered,leaf-f32,sweep-tree,bvh4-scalar,bvh4-sse,bvh8-scalar,bvh8-avx,bvh8-compressed,bvh8-avx-sweep,bvh8-compressed-sweep"
+            default_values_t = <bench::FastArg as clap::ValueEnum>::value_variants()
+                .to_vec()
         )]
         fast: Vec<bench::FastArg>,
         /// Also run obvhs (Bvh2, CwBvh) and bvh on the same input, and
