@@ -17,7 +17,7 @@ use toml::de::{DeTable, DeValue};
 /// counted from 0 (`objects[0]` is the first `[[objects]]` entry).
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
-    /// The file could not be read (or is not UTF-8).
+    /// The file could not be read.
     #[error("{}: cannot read the scene file: {source}", path.display())]
     Read {
         /// The path given to [`load`](crate::load).

@@ -61,6 +61,7 @@
 
 mod error;
 mod mesh;
+mod obj_check;
 mod raw;
 mod shapes;
 
@@ -470,12 +471,27 @@ impl Shape {
 /// Reads and checks the scene file at `path`. Errors name the file as
 /// `path` shows it.
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
-    let source =
-        std::fs::read_to_string(path).map_err(|source| SceneError::Read {
-            path: path.to_owned(),
-            source,
-        })?;
-    parse(&source, &path.display().to_string())
+    let bytes = std::fs::read(path).map_err(|source| SceneError::Read {
+        path: path.to_owned(),
+        source,
+    })?;
+    let file = path.display().to_string();
+    // Text that is not UTF-8 is named at its first bad byte.
+    let source = String::from_utf8(bytes).map_err(|e| {
+        let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+        let line = 1 + valid.iter().filter(|&&b| b == b'\n').count();
+        let start =
+            valid.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
+        let column =
+            1 + String::from_utf8_lossy(&valid[start..]).chars().count();
+        SceneError::Syntax {
+            file: file.clone(),
+            line,
+            column,
+            message: "not UTF-8 text".to_string(),
+        }
+    })?;
+    parse(&source, &file)
 }
 
 /// Reads and checks a scene from `source`; `file_name` is only used in

@@ -130,11 +130,30 @@ impl Mesh {
             single_index: true,
             ..tobj::LoadOptions::default()
         };
-        let (models, _) =
-            tobj::load_obj(path, &options).map_err(|e| MeshError::Obj {
-                file: file.clone(),
-                message: explain(path, &e),
-            })?;
+        // Step 1: the text, every line this reader uses checked first
+        // (so that each error names its line).
+        let fail = |message: String| MeshError::Obj {
+            file: file.clone(),
+            message,
+        };
+        let bytes = std::fs::read(path).map_err(|e| fail(e.to_string()))?;
+        let text = String::from_utf8(bytes).map_err(|e| {
+            let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+            let line = 1 + valid.iter().filter(|&&b| b == b'\n').count();
+            fail(format!("line {line}: not UTF-8 text"))
+        })?;
+        if let Some(problem) = crate::obj_check::check_obj(&text) {
+            return Err(fail(problem));
+        }
+        // Step 2: the OBJ reader (no materials: the lecture's meshes
+        // take theirs from the scene).
+        let no_materials = |_: &Path| Err(tobj::LoadError::OpenFileFailed);
+        let (models, _) = tobj::load_obj_buf(
+            &mut std::io::BufReader::new(text.as_bytes()),
+            &options,
+            no_materials,
+        )
+        .map_err(|e| fail(explain(&text, &e)))?;
         let mut mesh = Mesh {
             vertices: Vec::new(),
             triangles: Vec::new(),
@@ -192,14 +211,10 @@ impl Mesh {
     }
 }
 
-/// What the OBJ reader's error means for `path`: the system's reason if
-/// the file cannot be read, else the first line that does not parse (the
-/// reader itself names no line).
-fn explain(path: &Path, error: &tobj::LoadError) -> String {
-    let text = match std::fs::read_to_string(path) {
-        Ok(text) => text,
-        Err(e) => return e.to_string(),
-    };
+/// What the OBJ reader's error means for the file's `text`: the first
+/// line that does not parse (the reader itself names no line). After
+/// [`check_obj`](crate::obj_check::check_obj) this is rare.
+fn explain(text: &str, error: &tobj::LoadError) -> String {
     let mut vertices = 0usize;
     for (number, line) in text.lines().enumerate() {
         let mut words = line.split_whitespace();
@@ -222,7 +237,7 @@ fn explain(path: &Path, error: &tobj::LoadError) -> String {
             return format!("line {}: {error}: {}", number + 1, line.trim());
         }
     }
-    error.to_string()
+    format!("{error} (the OBJ reader names no line)")
 }
 
 #[cfg(test)]
