@@ -26,6 +26,7 @@ mod report_formats;
 mod snapshot_changes;
 mod snapshot_diff;
 mod snapshot_table;
+mod stability;
 mod student_edition;
 mod workspace;
 mod workspace_copy;
@@ -36,6 +37,7 @@ use std::process::ExitCode;
 use std::time::Duration;
 
 use clap::{Parser, Subcommand, ValueEnum};
+use raystep_stability::Budget;
 
 /// raystep: a lecture on ray tracing in Rust.
 #[derive(Debug, Parser)]
@@ -92,6 +94,26 @@ enum Command {
         /// The folder that holds one folder per chapter [default: <workspace>/book/src/figures].
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
+    },
+    /// Run the stability catalogue: every case where a method is known to
+    /// fail (parallel rays, shared edges, grazing rays, self-intersection,
+    /// huge coordinates, NaN, malformed inputs, …) against every method,
+    /// counted, as one table. Slow at the full count (10⁶ rays per
+    /// accelerator case); exits with failure where a method fails a case
+    /// it is built to survive.
+    Stability {
+        /// Rays per accelerator case (and per cheap primitive case).
+        #[arg(long, value_name = "N", default_value_t = Budget::FULL.rays)]
+        rays: usize,
+        /// Generated inputs per input case.
+        #[arg(long, value_name = "N", default_value_t = Budget::FULL.inputs)]
+        inputs: usize,
+        /// Also write the rows as JSON to FILE.
+        #[arg(long, value_name = "FILE")]
+        json: Option<PathBuf>,
+        /// Also write the book's Markdown table to FILE.
+        #[arg(long, value_name = "FILE")]
+        markdown: Option<PathBuf>,
     },
     /// Render a scene file (TOML) to a PNG.
     Render {
@@ -478,6 +500,17 @@ fn main() -> ExitCode {
             repeats,
             chapter,
             out,
+        }),
+        Command::Stability {
+            rays,
+            inputs,
+            json,
+            markdown,
+        } => stability::run(&stability::Options {
+            rays,
+            inputs,
+            json,
+            markdown,
         }),
         Command::Render {
             scene,
