@@ -168,9 +168,27 @@ pub fn check_chapter(
         }
         Err(failure) => Report::not_built(&exercises, failure),
     };
+    if !run.reference {
+        refuse_exercises(&mut report, &dir);
+    }
     report.changed_snapshots = snapshot_changes::changed_snapshots(&dir);
     report.package_dir = crate::relative(&dir);
     Ok(report)
+}
+
+/// Every exercise file in `dir/exercise/` that names another file, the
+/// environment or the operating system is refused, whatever its tests
+/// said: they ran code that is not judged on its own text.
+fn refuse_exercises(report: &mut Report, dir: &Path) {
+    for (exercise, verdict) in &mut report.exercises {
+        let file = format!("exercise/{exercise}.rs");
+        let Ok(text) = std::fs::read_to_string(dir.join(&file)) else {
+            continue;
+        };
+        if let Some(refusal) = crate::submission_rules::first_refusal(&text) {
+            *verdict = Verdict::Refused(refusal.describe(&file));
+        }
+    }
 }
 
 /// Only builds the tests of `chapter` (as [`check_chapter`] does): why
@@ -697,6 +715,27 @@ fn run_tests(
                     "{test} overflowed its stack: a recursion that never \
                      ends? {how}"
                 );
+            } else if !status.success() {
+                // Which tests were running when it died, and of what.
+                let output = parse_output_in(&stdout, context);
+                let running = if output.finished {
+                    Vec::new()
+                } else {
+                    let listed = list_tests(executable, cargo, limit, context);
+                    still_running(&output, &listed, threads)
+                };
+                let what = match out_of_memory(&stderr) {
+                    Some(allocation) => format!(
+                        "out of memory ({allocation}: a loop that never \
+                         ends while it collects?)"
+                    ),
+                    None => "crashed".to_string(),
+                };
+                if !running.is_empty() {
+                    how = format!("{} {what}; {how}", running.join(", "));
+                } else if out_of_memory(&stderr).is_some() {
+                    how = format!("{what}; {how}");
+                }
             }
             (
                 stdout,
@@ -711,22 +750,7 @@ fn run_tests(
             exit: Exit::TimedOut,
             ..
         }) => {
-            // Which tests there are, in the order libtest starts them.
-            let mut list = test_command(
-                executable,
-                cargo,
-                &["--list", "--format", "terse"],
-                context,
-            );
-            let listed = match run_with_limit(&mut list, LIST_LIMIT.min(limit))
-            {
-                Ok(Ran {
-                    stdout,
-                    exit: Exit::Status(status),
-                    ..
-                }) if status.success() => parse_list(&stdout),
-                _ => Vec::new(),
-            };
+            let listed = list_tests(executable, cargo, limit, context);
             (
                 stdout,
                 Ended::TimedOut {
@@ -738,6 +762,49 @@ fn run_tests(
         }
     };
     test_binary_in(executable.target.clone(), &stdout, &ended, context)
+}
+
+/// The tests of a binary, in the order libtest starts them (`--list`);
+/// empty if that cannot be told.
+fn list_tests(
+    executable: &Executable,
+    cargo: &str,
+    limit: Duration,
+    context: &Context,
+) -> Vec<String> {
+    let mut list = test_command(
+        executable,
+        cargo,
+        &["--list", "--format", "terse"],
+        context,
+    );
+    match run_with_limit(&mut list, LIST_LIMIT.min(limit)) {
+        Ok(Ran {
+            stdout,
+            exit: Exit::Status(status),
+            ..
+        }) if status.success() => parse_list(&stdout),
+        _ => Vec::new(),
+    }
+}
+
+/// The runtime's note when an allocation failed (the process then
+/// aborts): `memory allocation of 6442450944 bytes failed`, as `6 GiB`.
+pub fn out_of_memory(stderr: &str) -> Option<String> {
+    stderr.lines().find_map(|line| {
+        let bytes: u64 = line
+            .trim()
+            .strip_prefix("memory allocation of ")?
+            .strip_suffix(" bytes failed")?
+            .parse()
+            .ok()?;
+        let gib = bytes as f64 / (1u64 << 30) as f64;
+        Some(if gib >= 0.1 {
+            format!("it asked for {gib:.1} GiB at once")
+        } else {
+            format!("it asked for {bytes} bytes at once")
+        })
+    })
 }
 
 /// How a process run by [`run_with_limit`] ended.
@@ -1231,8 +1298,8 @@ pub fn parse_list(stdout: &str) -> Vec<String> {
 
 /// Why a failed test failed, from its captured output: for an insta
 /// snapshot, the first row or line that differs and where it is asserted;
-/// otherwise the first line of the first panic and where it panicked (for
-/// `assert_eq!`, with the two values when they are short).
+/// otherwise the first panic's message (every line of it, in one line) and
+/// where it panicked (for `assert_eq!`, with the two values).
 fn failure(text: &[&str], context: &Context) -> Option<Failure> {
     let panic = text.iter().position(|l| {
         l.starts_with("thread '") && l.contains(" panicked at ")
@@ -1257,21 +1324,75 @@ fn failure(text: &[&str], context: &Context) -> Option<Failure> {
         });
     }
     let mut message = text.get(panic + 1)?.trim().to_string();
+    let mut at = panicked_at;
     if message.starts_with("assertion `left") {
         // assert_eq!/assert_ne!: the two values follow on their own lines.
         let value = |i: usize, label: &str| {
             let line = text.get(panic + i)?.trim_start().strip_prefix(label)?;
-            (line.len() <= 80).then(|| line.trim().to_string())
+            Some(shortened(line.trim(), VALUE_CHARS))
         };
         if let (Some(left), Some(right)) =
             (value(2, "left:"), value(3, "right:"))
         {
             message.push_str(&format!(" (left: {left}, right: {right})"));
         }
+    } else {
+        // Every line of the panic's message, not only its first: a
+        // property test's says which assertion failed with which values
+        // (`prop_assert_eq!`'s left and right), where, and on which input.
+        let rest = text[panic + 2..]
+            .iter()
+            .take_while(|l| {
+                !l.starts_with("stack backtrace:")
+                    && !l.starts_with("note: ")
+                    && !l.starts_with("thread '")
+                    && !l.starts_with('\t')
+            })
+            .map(|l| l.trim())
+            .filter(|l| !l.is_empty());
+        for line in rest {
+            message.push(' ');
+            message.push_str(line);
+        }
+        // proptest panics where its macro starts; its message says where
+        // the failing assertion is: `… at tests/walk.rs:168.`
+        if message.starts_with("Test failed: ")
+            && let Some(place) = proptest_location(&message, context)
+        {
+            at = Some(place);
+        }
+        message = shortened(&message, MESSAGE_CHARS);
     }
-    Some(Failure {
-        message,
-        at: panicked_at,
+    Some(Failure { message, at })
+}
+
+/// The longest value of an `assert_eq!` kept in a message, in characters.
+const VALUE_CHARS: usize = 300;
+
+/// The longest panic message kept, in characters.
+const MESSAGE_CHARS: usize = 800;
+
+/// `text` cut to `limit` characters, with `…` where it was cut.
+fn shortened(text: &str, limit: usize) -> String {
+    if text.chars().count() <= limit {
+        return text.to_string();
+    }
+    let mut cut: String = text.chars().take(limit - 1).collect();
+    cut.push('…');
+    cut
+}
+
+/// The location in a proptest message, `… at tests/walk.rs:168.`, as
+/// [`Context::location`] says it.
+fn proptest_location(message: &str, context: &Context) -> Option<String> {
+    message.match_indices(" at ").find_map(|(i, _)| {
+        let rest = &message[i + 4..];
+        let end = rest.find(|c: char| c.is_whitespace()).unwrap_or(rest.len());
+        let place = rest[..end].trim_end_matches(['.', ',', ';']);
+        let (file, line) = place.rsplit_once(':')?;
+        (file.ends_with(".rs") && line.bytes().all(|b| b.is_ascii_digit()))
+            .then(|| context.location(place))
+            .flatten()
     })
 }
 
@@ -1360,6 +1481,14 @@ pub fn test_binary_in(
                 still_running: still_running(&output, listed, *threads),
             }),
         ),
+        // Killed by a signal after its `test result:` line: libtest itself
+        // never does that, so the line may not be libtest's.
+        Ended::Exited {
+            success: false,
+            how,
+        } if output.finished && how.contains("signal: ") => {
+            (Some(format!("the test binary crashed ({how})")), None)
+        }
         _ if output.finished => (None, None),
         Ended::Exited { success: true, .. } => {
             (Some("the test binary stopped early".to_string()), None)
@@ -1435,6 +1564,9 @@ pub enum Verdict {
     /// Nothing was built to run: the chapter does not compile, or cargo
     /// failed.
     NotBuilt(CargoFailure),
+    /// The exercise file names another file, the environment or the
+    /// operating system (see [`crate::submission_rules`]): where, and what.
+    Refused(String),
 }
 
 impl Verdict {
@@ -1450,6 +1582,7 @@ impl Verdict {
                 "does not compile"
             }
             Verdict::NotBuilt(CargoFailure::Cargo(_)) => "cargo failed",
+            Verdict::Refused(_) => "refused",
         }
     }
 
@@ -1460,6 +1593,7 @@ impl Verdict {
             Verdict::Failed(why) => Some(why.clone()),
             Verdict::TimedOut(timed_out) => Some(timed_out.to_string()),
             Verdict::NotBuilt(failure) => Some(failure.to_string()),
+            Verdict::Refused(why) => Some(why.clone()),
         }
     }
 }
@@ -1472,6 +1606,7 @@ impl fmt::Display for Verdict {
             Verdict::NotAttempted => write!(f, "not attempted"),
             Verdict::TimedOut(timed_out) => write!(f, "{timed_out}"),
             Verdict::NotBuilt(failure) => write!(f, "{failure}"),
+            Verdict::Refused(why) => write!(f, "refused: {why}"),
         }
     }
 }
@@ -2074,6 +2209,91 @@ mod tests {
             )
         );
         assert_eq!(report.other_passed, 1);
+    }
+
+    /// A panic of several lines keeps them all (a property test's says
+    /// which values failed, where, and on which input); proptest's own
+    /// location replaces its macro's; long values are cut, not dropped.
+    #[test]
+    fn a_panic_of_several_lines_keeps_its_values() {
+        let stdout = "\nrunning 2 tests\ntest p ... FAILED\ntest e ... FAILED\n\n\
+            failures:\n\n---- p stdout ----\n\n\
+            thread 'p' (31207) panicked at tests/t.rs:2:1:\n\
+            Test failed: assertion failed: `(left == right)` \n  left: `0`, \n right: `100`: doubling 0 at tests/t.rs:5.\n\
+            minimal failing input: x = 0\n\tsuccesses: 0\n\tlocal rejects: 0\n\tglobal rejects: 0\n\n\
+            ---- e stdout ----\n\n\
+            thread 'e' (31158) panicked at tests/t.rs:10:10:\n\
+            assertion `left == right` failed\n  left: [1.0, 1.0, 1.0]\n right: [X]\n\
+            note: run with `RUST_BACKTRACE=1` environment variable to display a backtrace\n\n\
+            failures:\n    p\n    e\n\n\
+            test result: FAILED. 0 passed; 2 failed; 0 ignored; 0 measured; 0 filtered out; finished in 0.00s\n";
+        let long = format!("[{}]", "1.0, ".repeat(100));
+        let stdout = stdout.replace("[X]", &long);
+        let output = parse_output(&stdout);
+        let failure = |name: &str| match &output
+            .results
+            .iter()
+            .find(|r| r.name == name)
+            .unwrap()
+            .outcome
+        {
+            Outcome::Failed(Some(failure)) => failure.clone(),
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(
+            failure("p"),
+            Failure {
+                message: "Test failed: assertion failed: `(left == right)` \
+                          left: `0`, right: `100`: doubling 0 at \
+                          tests/t.rs:5. minimal failing input: x = 0"
+                    .into(),
+                at: Some("tests/t.rs:5".into()),
+            }
+        );
+        let e = failure("e");
+        assert!(
+            e.message.starts_with(
+                "assertion `left == right` failed (left: [1.0, 1.0, 1.0], \
+                 right: [1.0, 1.0,"
+            ) && e.message.ends_with("…)")
+                && e.message.chars().count() < 400,
+            "{e:?}"
+        );
+    }
+
+    #[test]
+    fn out_of_memory_is_said_with_its_size() {
+        let stderr = "\nmemory allocation of 6442450944 bytes failed\n";
+        assert_eq!(
+            out_of_memory(stderr).as_deref(),
+            Some("it asked for 6.0 GiB at once")
+        );
+        assert_eq!(
+            out_of_memory("memory allocation of 4096 bytes failed").as_deref(),
+            Some("it asked for 4096 bytes at once")
+        );
+        assert_eq!(out_of_memory("thread 'x' panicked"), None);
+    }
+
+    /// A `test result:` line followed by a death by signal is not
+    /// libtest's: the binary crashed, whatever it printed before.
+    #[test]
+    fn a_result_line_before_a_crash_is_not_believed() {
+        let forged = "\nrunning 1 tests\ntest a ... ok\n\n\
+            test result: ok. 1 passed; 0 failed; 0 ignored; 0 measured; 0 filtered out; finished in 0.00s\n";
+        let abort = Ended::Exited {
+            success: false,
+            how: "signal: 6, SIGABRT: process abort signal".to_string(),
+        };
+        let binary = test_binary(Target::Test("a".into()), forged, &abort);
+        assert_eq!(
+            binary.crashed.as_deref(),
+            Some(
+                "the test binary crashed (signal: 6, SIGABRT: process abort signal)"
+            )
+        );
+        let report = report(&exercises(&["a"]), &[binary], &HashMap::new());
+        assert_eq!(report.exercises[0].1.kind(), "failed");
     }
 
     #[test]

@@ -20,8 +20,10 @@ use raystep_figure::Chapter;
 use serde::Serialize;
 
 use crate::check::{self, BuildFailure, CargoFailure, Run};
+use crate::committed_stubs::{self, Stubs};
 use crate::{
-    Error, atomic_file, shown, snapshot_changes, workspace, workspace_copy,
+    Error, atomic_file, shown, snapshot_changes, submission_rules, workspace,
+    workspace_copy,
 };
 
 /// What `raystep grade` was asked to do.
@@ -49,7 +51,8 @@ pub struct Row {
     /// The exercise.
     pub exercise: String,
     /// `passed`, `failed`, `not attempted`, `timed out`, `missing file`,
-    /// `does not compile` (or `cargo failed`).
+    /// `refused` (the file names another file, the environment or the
+    /// operating system), `does not compile` (or `cargo failed`).
     pub verdict: String,
     /// The first failure (which test, where, why), if any.
     pub message: String,
@@ -88,6 +91,12 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         chapter.exercises.iter().map(|e| e.to_string()).collect();
 
     let instructor = root.join("chapters").join(chapter.package);
+    // The stubs as committed: an instructor trying the exercises in
+    // `exercise/` must not give a student who left a file out a solution.
+    let stubs = committed_stubs::committed(&root, &[chapter])?;
+    if let Some(note) = stubs.note() {
+        eprintln!("{note}");
+    }
     let changed = snapshot_changes::changed_snapshots(&instructor);
     for line in
         snapshot_changes::advice(&changed, &crate::relative(&instructor))
@@ -102,6 +111,9 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     let copy = scratch.path().join("workspace");
     eprintln!("copying the workspace to {}…", copy.display());
     workspace_copy::copy_sources(&root, &copy, &[])?;
+    // No reference body of the graded chapter in the copy: its exercise
+    // modules in `src/` are the stubs too, as in the student edition.
+    stubs.write(&copy, chapter, true)?;
     link_shared(&root, scratch.path());
     let run = Run {
         reference: false,
@@ -127,8 +139,14 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
             student: name.clone(),
             file: file.clone(),
         }));
-        let verdicts =
-            grade_student(&root, &copy, chapter, &submission.files, &run)?;
+        let verdicts = grade_student(
+            &root,
+            &copy,
+            chapter,
+            &stubs,
+            &submission.files,
+            &run,
+        )?;
         rows.extend(verdicts.into_iter().map(
             |(exercise, (verdict, message))| Row {
                 student: name.clone(),
@@ -249,11 +267,13 @@ pub fn submission(folder: &Path, exercises: &[String]) -> Submission {
 type Verdict = (String, String);
 
 /// Checks one student's files in the scratch workspace `copy`; the
-/// chapter's `exercise/` and `tests/snapshots/` come from `root` first.
+/// chapter's `exercise/` (its committed `stubs`) and `tests/snapshots/`
+/// (from `root`) are put back first.
 fn grade_student(
     root: &Path,
     copy: &Path,
     chapter: &Chapter,
+    stubs: &Stubs,
     files: &BTreeMap<String, PathBuf>,
     run: &Run,
 ) -> Result<Vec<(String, Verdict)>, Error> {
@@ -265,11 +285,11 @@ fn grade_student(
             &scratch.join(folder),
         )?;
     }
+    stubs.write(copy, chapter, false)?;
     let stub = |exercise: &str| -> Result<(), Error> {
-        let from = instructor.join("exercise").join(format!("{exercise}.rs"));
         let to = scratch.join("exercise").join(format!("{exercise}.rs"));
-        fs::copy(&from, &to).map_err(|e| Error::io(&from, e))?;
-        Ok(())
+        fs::write(&to, stubs.text(chapter, exercise))
+            .map_err(|e| Error::io(&to, e))
     };
 
     // Verdicts settled before the tests run.
@@ -287,8 +307,28 @@ fn grade_student(
             continue;
         };
         let to = scratch.join("exercise").join(format!("{exercise}.rs"));
-        match fs::copy(file, &to) {
-            Ok(_) => submitted.push(exercise.to_string()),
+        let bytes = fs::read(file);
+        // A file that names another file, the environment or the
+        // operating system is not run at all (one that is not UTF-8 does
+        // not compile).
+        if let Ok(text) = bytes.as_deref().map(std::str::from_utf8)
+            && let Ok(text) = text
+            && let Some(refusal) = submission_rules::first_refusal(text)
+        {
+            settled.insert(
+                exercise.to_string(),
+                (
+                    "refused".into(),
+                    format!(
+                        "{} (the stub was used)",
+                        refusal.describe(&format!("exercise/{exercise}.rs"))
+                    ),
+                ),
+            );
+            continue;
+        }
+        match bytes.and_then(|bytes| fs::write(&to, bytes)) {
+            Ok(()) => submitted.push(exercise.to_string()),
             Err(error) => {
                 settled.insert(
                     exercise.to_string(),

@@ -18,6 +18,7 @@ mod bench;
 mod book;
 mod chapters;
 mod check;
+mod committed_stubs;
 mod figures;
 mod grade;
 mod measure;
@@ -28,6 +29,7 @@ mod snapshot_diff;
 mod snapshot_table;
 mod stability;
 mod student_edition;
+mod submission_rules;
 mod workspace;
 mod workspace_copy;
 

@@ -2,8 +2,9 @@
 //! reference solution anywhere in it.
 //!
 //! The sources are copied (no `target/`, no `.git`, no book output); then,
-//! for every chapter and exercise `e`, `src/<e>.rs` gets the text of the
-//! stub `exercise/<e>.rs`, so the crates build, the book's listings show
+//! for every chapter and exercise `e`, `exercise/<e>.rs` and `src/<e>.rs`
+//! get the text of the stub as committed to git (not what `exercise/`
+//! holds now: an instructor may be trying the exercises), so the crates build, the book's listings show
 //! the stubs, and `raystep check` works as in the instructor's workspace.
 //! With no reference left, a chapter's `exercise` feature also turns on
 //! the `exercise` feature of the chapters it builds on: chapter 2's tests
@@ -19,12 +20,16 @@ use std::process::{Command, ExitCode, Stdio};
 
 use raystep_figure::Chapter;
 
+use crate::committed_stubs::{self, Stubs};
 use crate::{Error, chapters, shown, workspace, workspace_copy};
 
 /// Runs `raystep student-edition OUT`.
 pub fn run(out: &Path) -> Result<ExitCode, Error> {
     let root = workspace::root();
-    let git = export(&root, out, chapters::CHAPTERS)?;
+    let (git, stubs) = export(&root, out, chapters::CHAPTERS)?;
+    if let Some(note) = stubs.note() {
+        eprintln!("{note}");
+    }
     let exercises: usize =
         chapters::CHAPTERS.iter().map(|c| c.exercises.len()).sum();
     println!(
@@ -53,13 +58,16 @@ pub enum Git {
 }
 
 /// Writes the student edition of the workspace at `root` to `out`, which
-/// must not exist or be an empty folder.
+/// must not exist or be an empty folder. The stubs are the committed ones
+/// (see [`committed_stubs`]), whatever `exercise/` holds now; the returned
+/// [`Stubs`] name the exercise files that differ from them.
 pub fn export(
     root: &Path,
     out: &Path,
     chapters: &[&Chapter],
-) -> Result<Git, Error> {
+) -> Result<(Git, Stubs), Error> {
     refuse_non_empty(out)?;
+    let stubs = committed_stubs::committed(root, chapters)?;
     let parent = match out.parent() {
         Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
         _ => PathBuf::from("."),
@@ -81,7 +89,7 @@ pub fn export(
     }
     workspace_copy::copy_sources(root, partial.path(), &exclude)?;
     for chapter in chapters {
-        stub_chapter(partial.path(), chapter)?;
+        stubs.write(partial.path(), chapter, true)?;
         chain_exercise_feature(partial.path(), chapter, chapters)?;
     }
     let git = commit(partial.path())?;
@@ -91,7 +99,7 @@ pub fn export(
     fs::rename(&partial_path, out).map_err(|e| Error::io(out, e))?;
     // Renamed away: nothing left for the guard to remove.
     let _ = partial.keep();
-    Ok(git)
+    Ok((git, stubs))
 }
 
 /// An error unless `out` does not exist or is an empty folder.
@@ -114,18 +122,6 @@ fn refuse_non_empty(out: &Path) -> Result<(), Error> {
             ))),
         },
     }
-}
-
-/// `src/<e>.rs` ← `exercise/<e>.rs` for every exercise of the chapter.
-fn stub_chapter(copy: &Path, chapter: &Chapter) -> Result<(), Error> {
-    let dir = copy.join("chapters").join(chapter.package);
-    for exercise in chapter.exercises {
-        let stub = dir.join("exercise").join(format!("{exercise}.rs"));
-        let module = dir.join("src").join(format!("{exercise}.rs"));
-        let text = fs::read(&stub).map_err(|e| Error::io(&stub, e))?;
-        fs::write(&module, text).map_err(|e| Error::io(&module, e))?;
-    }
-    Ok(())
 }
 
 /// The chapters the chapter's `Cargo.toml` depends on (its

@@ -1,0 +1,152 @@
+//! The exercise stubs as committed to git, not as the working tree holds
+//! them: an instructor who solves the exercises in `exercise/` to try them
+//! must not hand the solutions out (`student-edition`) or to a student who
+//! left a file out (`grade`).
+
+use std::collections::BTreeMap;
+use std::io;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+use raystep_figure::Chapter;
+
+use crate::Error;
+
+/// Every stub of some chapters, and the working-tree files that differ.
+#[derive(Debug, Default)]
+pub struct Stubs {
+    /// `(package, exercise)` → the stub's text.
+    texts: BTreeMap<(String, String), String>,
+    /// Exercise files (relative to the workspace) whose working-tree text
+    /// is not their committed stub.
+    pub differing: Vec<PathBuf>,
+}
+
+impl Stubs {
+    /// The stub of `exercise` in `chapter`.
+    pub fn text(&self, chapter: &Chapter, exercise: &str) -> &str {
+        self.texts
+            .get(&(chapter.package.to_string(), exercise.to_string()))
+            .map_or("", String::as_str)
+    }
+
+    /// Writes the chapter's stubs into `exercise/` and, when `modules`,
+    /// over the exercise modules in `src/` of the workspace at `copy`.
+    pub fn write(
+        &self,
+        copy: &Path,
+        chapter: &Chapter,
+        modules: bool,
+    ) -> Result<(), Error> {
+        let dir = copy.join("chapters").join(chapter.package);
+        for exercise in chapter.exercises {
+            let text = self.text(chapter, exercise);
+            let mut folders = vec!["exercise"];
+            if modules {
+                folders.push("src");
+            }
+            for folder in folders {
+                let path = dir.join(folder).join(format!("{exercise}.rs"));
+                std::fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The note for files that differ from their stubs, if any.
+    pub fn note(&self) -> Option<String> {
+        (!self.differing.is_empty()).then(|| {
+            let files: Vec<String> = self
+                .differing
+                .iter()
+                .map(|p| p.display().to_string())
+                .collect();
+            format!(
+                "note: {} differ{} from the committed stub{} (solutions being \
+                 tried?); the committed stub{} used instead: {}",
+                if files.len() == 1 {
+                    "one exercise file"
+                } else {
+                    "exercise files"
+                },
+                if files.len() == 1 { "s" } else { "" },
+                if files.len() == 1 { "" } else { "s" },
+                if files.len() == 1 { " is" } else { "s are" },
+                files.join(", ")
+            )
+        })
+    }
+}
+
+/// The committed stubs of `chapters` in the workspace at `root`.
+///
+/// Each comes from git (`HEAD`); where git or the commit is missing (a
+/// copy without its repository), the working tree's file is taken only if
+/// it is still a stub (it holds a `todo!()`), else the export stops,
+/// naming the file.
+pub fn committed(root: &Path, chapters: &[&Chapter]) -> Result<Stubs, Error> {
+    let mut stubs = Stubs::default();
+    for chapter in chapters {
+        for exercise in chapter.exercises {
+            let relative = PathBuf::from("chapters")
+                .join(chapter.package)
+                .join("exercise")
+                .join(format!("{exercise}.rs"));
+            let path = root.join(&relative);
+            let working = std::fs::read_to_string(&path)
+                .map_err(|e| Error::io(&path, e))?;
+            let text = match from_git(root, &relative)? {
+                Some(text) => text,
+                None if working.contains("todo!(") => working.clone(),
+                None => {
+                    return Err(Error::Usage(format!(
+                        "{}: not in a git commit, and not a stub (no todo!() \
+                         in it): restore the stub before exporting",
+                        relative.display()
+                    )));
+                }
+            };
+            if text != working {
+                stubs.differing.push(relative.clone());
+            }
+            stubs.texts.insert(
+                (chapter.package.to_string(), exercise.to_string()),
+                text,
+            );
+        }
+    }
+    Ok(stubs)
+}
+
+/// The text of `relative` (to `root`) in git's `HEAD`, `None` if git, the
+/// repository or the file in it is missing.
+fn from_git(root: &Path, relative: &Path) -> Result<Option<String>, Error> {
+    let spec = format!(
+        "HEAD:./{}",
+        relative
+            .components()
+            .map(|c| c.as_os_str().to_string_lossy())
+            .collect::<Vec<_>>()
+            .join("/")
+    );
+    let out = Command::new("git")
+        .args(["show", &spec])
+        .current_dir(root)
+        .env_remove("GIT_DIR")
+        .env_remove("GIT_WORK_TREE")
+        .env_remove("GIT_INDEX_FILE")
+        .stdin(Stdio::null())
+        .stderr(Stdio::null())
+        .output();
+    match out {
+        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(None),
+        Err(e) => Err(Error::Spawn {
+            program: "git".to_string(),
+            source: e,
+        }),
+        Ok(out) if out.status.success() => {
+            Ok(String::from_utf8(out.stdout).ok())
+        }
+        Ok(_) => Ok(None),
+    }
+}
