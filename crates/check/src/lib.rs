@@ -4,8 +4,10 @@
 //! computes in another order (and so rounds differently in the last bits)
 //! still matches the reference's snapshot. For the same reason rendered
 //! images are compared with a [`Tolerance`] by [`assert_image_matches`].
+//! [`held_out`] holds the protocol of `raystep grade`'s held-out cases.
 #![deny(missing_docs)]
 
+pub mod held_out;
 mod image_compare;
 mod round;
 mod seeded;

@@ -142,8 +142,16 @@ pub fn check_chapter(
         chapter.exercises.iter().map(|e| e.to_string()).collect();
     let cargo = cargo_program();
     let built = build(&cargo, root, chapter.package, run)?;
+    let mut held_out_runner = None;
     let mut report = match built {
-        Ok(executables) => {
+        Ok(Built {
+            tests: executables,
+            examples,
+        }) => {
+            held_out_runner = examples
+                .into_iter()
+                .find(|(name, _)| *name == held_out_name(chapter))
+                .map(|(_, path)| path);
             let threads = test_threads();
             let context = Context {
                 workspace: Some(root.to_path_buf()),
@@ -171,6 +179,7 @@ pub fn check_chapter(
     if !run.reference {
         refuse_exercises(&mut report, &dir);
     }
+    report.held_out_runner = held_out_runner;
     report.changed_snapshots = snapshot_changes::changed_snapshots(&dir);
     report.package_dir = crate::relative(&dir);
     Ok(report)
@@ -201,6 +210,20 @@ pub fn build_failure(
     Ok(build(&cargo_program(), root, chapter.package, run)?.err())
 }
 
+/// The name of a chapter's held-out program: `examples/ch01_held_out.rs`
+/// (see `raystep_check::held_out`).
+pub fn held_out_name(chapter: &Chapter) -> String {
+    format!("{}_held_out", chapter.id)
+}
+
+/// What a test build built to run: the test binaries, and the examples by
+/// name.
+#[derive(Debug, Clone, PartialEq, Eq)]
+struct Built {
+    tests: Vec<Executable>,
+    examples: Vec<(String, PathBuf)>,
+}
+
 /// The text of every `tests/*.rs` of the package in `dir`, by file stem: to
 /// put failing tests in source order.
 fn test_sources(dir: &Path) -> HashMap<String, String> {
@@ -219,7 +242,7 @@ fn test_sources(dir: &Path) -> HashMap<String, String> {
 }
 
 /// The cargo that runs raystep (`cargo run` sets `CARGO`), else `cargo` on the path.
-fn cargo_program() -> String {
+pub(crate) fn cargo_program() -> String {
     std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_string())
 }
 
@@ -230,7 +253,7 @@ fn build(
     root: &Path,
     package: &str,
     options: &Run,
-) -> Result<Result<Vec<Executable>, BuildFailure>, Error> {
+) -> Result<Result<Built, BuildFailure>, Error> {
     let mut command = Command::new(cargo);
     command.current_dir(root).args([
         "test",
@@ -301,7 +324,10 @@ fn build(
             errors: Vec::new(),
         }));
     }
-    Ok(Ok(executables))
+    Ok(Ok(Built {
+        tests: executables,
+        examples: examples(&stdout),
+    }))
 }
 
 /// Cargo's arguments that keep this workspace's own artifacts apart in a
@@ -495,6 +521,24 @@ pub fn test_executables(messages: &str) -> Vec<Executable> {
         (rank_a, name_a).cmp(&(rank_b, name_b))
     });
     found.into_iter().map(|(_, _, e)| e).collect()
+}
+
+/// The examples named in cargo's JSON messages (a test build builds
+/// them too): (name, executable).
+pub fn examples(messages: &str) -> Vec<(String, PathBuf)> {
+    messages
+        .lines()
+        .filter_map(|line| serde_json::from_str::<Artifact>(line).ok())
+        .filter(|a| a.reason == "compiler-artifact")
+        .filter_map(|a| {
+            let target = a.target?;
+            target
+                .kind
+                .iter()
+                .any(|k| k == "example")
+                .then_some((target.name, a.executable?))
+        })
+        .collect()
 }
 
 /// `tests/line.rs` → `line`; `tests/line/main.rs` → `line`.
@@ -809,7 +853,7 @@ pub fn out_of_memory(stderr: &str) -> Option<String> {
 
 /// How a process run by [`run_with_limit`] ended.
 #[derive(Debug)]
-enum Exit {
+pub(crate) enum Exit {
     /// By itself.
     Status(ExitStatus),
     /// It was still running at the limit, and was killed with every process
@@ -819,14 +863,14 @@ enum Exit {
 
 /// What [`run_with_limit`] saw.
 #[derive(Debug)]
-struct Ran {
+pub(crate) struct Ran {
     /// Everything the process printed on stdout (until it was killed).
-    stdout: String,
+    pub stdout: String,
     /// Everything it printed on stderr: where a crash says what it was
     /// (`thread 'x' has overflowed its stack`).
-    stderr: String,
+    pub stderr: String,
     /// How it ended.
-    exit: Exit,
+    pub exit: Exit,
 }
 
 /// Runs `command` (stdin empty, stdout and stderr captured) for at
@@ -834,7 +878,10 @@ struct Ran {
 /// at the limit the whole group is killed: the process and anything it
 /// started. Ctrl-C still stops it: raystep's terminal signals are forwarded
 /// to the group (see [`process_group`]).
-fn run_with_limit(command: &mut Command, limit: Duration) -> io::Result<Ran> {
+pub(crate) fn run_with_limit(
+    command: &mut Command,
+    limit: Duration,
+) -> io::Result<Ran> {
     command
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
@@ -931,7 +978,7 @@ fn wait_with_limit(
 
 /// How a process ended, as cargo says it: `exit status: 101`,
 /// `signal: 6, SIGABRT: process abort signal`.
-fn describe_status(status: ExitStatus) -> String {
+pub(crate) fn describe_status(status: ExitStatus) -> String {
     #[cfg(unix)]
     {
         use std::os::unix::process::ExitStatusExt;
@@ -1631,6 +1678,9 @@ pub struct Report {
     /// The package folder, as the user would type it (for the advice on
     /// changed snapshots).
     pub package_dir: PathBuf,
+    /// The chapter's held-out program as built with the code checked
+    /// (see [`held_out_name`]), if it has one.
+    pub held_out_runner: Option<PathBuf>,
 }
 
 impl Report {

@@ -22,8 +22,8 @@ use serde::Serialize;
 use crate::check::{self, BuildFailure, CargoFailure, Run};
 use crate::committed_stubs::{self, Stubs};
 use crate::{
-    Error, atomic_file, shown, snapshot_changes, submission_rules, workspace,
-    workspace_copy,
+    Error, atomic_file, held_out, shown, snapshot_changes, submission_rules,
+    workspace, workspace_copy,
 };
 
 /// What `raystep grade` was asked to do.
@@ -41,6 +41,8 @@ pub struct Options {
     pub timeout: Duration,
     /// A target folder to build in (kept); else one in the scratch folder.
     pub target_dir: Option<PathBuf>,
+    /// The held-out cases' seed, to replay a run; else a new secret one.
+    pub seed: Option<u64>,
 }
 
 /// One row of the table: a student's verdict on one exercise.
@@ -72,6 +74,9 @@ pub struct Ignored {
 struct JsonGrades<'a> {
     chapter: &'a str,
     package: &'a str,
+    /// The seed the held-out cases were drawn from (to replay them), if
+    /// the chapter has held-out cases.
+    held_out_seed: Option<u64>,
     rows: &'a [Row],
     ignored: &'a [Ignored],
 }
@@ -115,6 +120,22 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     // modules in `src/` are the stubs too, as in the student edition.
     stubs.write(&copy, chapter, true)?;
     link_shared(&root, scratch.path());
+    // The held-out cases' judge: the reference, built in the instructor's
+    // workspace; one secret seed for this run.
+    let reference = held_out::build_reference(
+        &root,
+        chapter,
+        options.target_dir.as_deref(),
+        &scratch.path().join("reference"),
+    )?;
+    if reference.is_none() {
+        eprintln!(
+            "note: {} has no held-out cases (examples/{}.rs): only its tests judge",
+            chapter.package,
+            check::held_out_name(chapter)
+        );
+    }
+    let seed = options.seed.unwrap_or_else(held_out::new_seed);
     let run = Run {
         reference: false,
         target_dir: Some(
@@ -139,6 +160,11 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
             student: name.clone(),
             file: file.clone(),
         }));
+        let judge = reference.as_deref().map(|reference| Judge {
+            reference,
+            seed,
+            answers: scratch.path().join(format!("answers-{}.txt", i + 1)),
+        });
         let verdicts = grade_student(
             &root,
             &copy,
@@ -146,6 +172,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
             &stubs,
             &submission.files,
             &run,
+            judge.as_ref(),
         )?;
         rows.extend(verdicts.into_iter().map(
             |(exercise, (verdict, message))| Row {
@@ -162,6 +189,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         let document = JsonGrades {
             chapter: chapter.id,
             package: chapter.package,
+            held_out_seed: reference.is_some().then_some(seed),
             rows: &rows,
             ignored: &ignored,
         };
@@ -266,6 +294,16 @@ pub fn submission(folder: &Path, exercises: &[String]) -> Submission {
 /// A verdict and its message.
 type Verdict = (String, String);
 
+/// What judges a student's held-out cases.
+struct Judge<'a> {
+    /// The held-out program built with the reference.
+    reference: &'a Path,
+    /// The run's secret seed.
+    seed: u64,
+    /// Where the student's answers are kept.
+    answers: PathBuf,
+}
+
 /// Checks one student's files in the scratch workspace `copy`; the
 /// chapter's `exercise/` (its committed `stubs`) and `tests/snapshots/`
 /// (from `root`) are put back first.
@@ -276,6 +314,7 @@ fn grade_student(
     stubs: &Stubs,
     files: &BTreeMap<String, PathBuf>,
     run: &Run,
+    judge: Option<&Judge>,
 ) -> Result<Vec<(String, Verdict)>, Error> {
     let instructor = root.join("chapters").join(chapter.package);
     let scratch = copy.join("chapters").join(chapter.package);
@@ -375,14 +414,28 @@ fn grade_student(
     }
 
     let report = check::check_chapter(copy, chapter, run)?;
+    let held_out = match (judge, &report.held_out_runner) {
+        (Some(judge), Some(runner)) => held_out::judge(
+            judge.reference,
+            runner,
+            chapter.exercises,
+            judge.seed,
+            run.timeout,
+            &judge.answers,
+        )?,
+        _ => BTreeMap::new(),
+    };
     Ok(report
         .exercises
         .into_iter()
         .map(|(exercise, verdict)| {
             let row = settled.remove(&exercise).unwrap_or_else(|| {
-                (
-                    verdict.kind().to_string(),
-                    verdict.message().unwrap_or_default(),
+                held_out::merged(
+                    (
+                        verdict.kind().to_string(),
+                        verdict.message().unwrap_or_default(),
+                    ),
+                    held_out.get(&exercise),
                 )
             });
             (exercise, row)

@@ -21,6 +21,7 @@ mod check;
 mod committed_stubs;
 mod figures;
 mod grade;
+mod held_out;
 mod measure;
 mod render;
 mod report_formats;
@@ -308,7 +309,14 @@ enum Command {
     /// workspace, which is never changed. An exercise without a file is
     /// `missing file` (its stub is used, so the others are still judged);
     /// a file that does not compile is `does not compile` (its stub is then
-    /// used for the others).
+    /// used for the others); a file that names another file, the
+    /// environment or the operating system (`#[path]`, `include!`, `env!`,
+    /// `std::process`, `unsafe`, …) is `refused` and not run. The graded
+    /// chapter's reference is not in the copy: its exercise modules there
+    /// are the committed stubs. A pass of the tests stands only if the
+    /// chapter's held-out cases (`examples/chNN_held_out.rs`), drawn from a
+    /// new secret seed, agree with the reference too; the reference judges
+    /// them in a process of its own.
     Grade {
         /// The folder of submissions, one folder per student.
         submissions: PathBuf,
@@ -331,6 +339,10 @@ enum Command {
         /// removed at the end].
         #[arg(long, value_name = "DIR")]
         target_dir: Option<PathBuf>,
+        /// Draw the held-out cases from this seed, to replay a run (the
+        /// JSON report names each run's seed) [default: a new secret seed].
+        #[arg(long, value_name = "N")]
+        held_out_seed: Option<u64>,
     },
     /// Write a copy of the workspace for students, without the solutions.
     ///
@@ -619,6 +631,7 @@ fn main() -> ExitCode {
             json,
             timeout,
             target_dir,
+            held_out_seed,
         } => grade::run(&grade::Options {
             submissions,
             chapter,
@@ -626,6 +639,7 @@ fn main() -> ExitCode {
             json,
             timeout: Duration::from_secs_f64(timeout),
             target_dir: check_target_dir(target_dir),
+            seed: held_out_seed,
         }),
         Command::StudentEdition { out } => student_edition::run(&out),
     };

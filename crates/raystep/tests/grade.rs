@@ -29,6 +29,22 @@ fn edited(text: &str, from: &str, to: &str) -> String {
     text.replacen(from, to, 1)
 }
 
+/// Chapter 1's first exercise, every function calling `forge()`.
+const FORGED_API: &str = "use crate::{Degenerate, Line2};
+use raystep_core::DVec2;
+pub fn rotate90(_: DVec2) -> DVec2 {
+    forge()
+}
+impl Line2 {
+    pub fn through(_: DVec2, _: DVec2) -> Result<Line2, Degenerate> {
+        forge()
+    }
+    pub fn eval(&self, _: DVec2) -> f64 {
+        forge()
+    }
+}
+";
+
 /// Writes `files` (relative path → text) into `dir`.
 fn write_all(dir: &Path, files: &[(&str, String)]) {
     for (path, text) in files {
@@ -97,6 +113,114 @@ fn each_submission_gets_its_verdicts() {
         &submissions.join("missing"),
         &[("exercise/plane_through_points.rs", plane.clone())],
     );
+    // Tricks (issue: "grades no submission can forge").
+    let instructor_line = workspace()
+        .join(CHAPTER)
+        .join("src/line_through_points.rs")
+        .canonicalize()
+        .unwrap();
+    // path: the reference module itself, by #[path].
+    write_all(
+        &submissions.join("path"),
+        &[
+            (
+                "exercise/line_through_points.rs",
+                "#[path = \"../src/line_through_points.rs\"]\nmod reference;\n\
+                 pub use reference::*;\n"
+                    .to_string(),
+            ),
+            ("exercise/plane_through_points.rs", plane.clone()),
+        ],
+    );
+    // include: the instructor's reference by absolute path.
+    write_all(
+        &submissions.join("include"),
+        &[
+            (
+                "exercise/line_through_points.rs",
+                format!(
+                    "include!({:?});\n",
+                    instructor_line.display().to_string()
+                ),
+            ),
+            ("exercise/plane_through_points.rs", plane.clone()),
+        ],
+    );
+    // forger: on its first call, prints libtest's lines for every test of
+    // the binary it runs in, then ends the process with success.
+    let forge = r#"
+fn forge() -> ! {
+    let me = std::env::current_exe().unwrap();
+    let list = std::process::Command::new(&me)
+        .args(["--list", "--format", "terse"])
+        .output()
+        .unwrap();
+    let list = String::from_utf8_lossy(&list.stdout).into_owned();
+    let names: Vec<&str> =
+        list.lines().filter_map(|l| l.strip_suffix(": test")).collect();
+    println!("\nrunning {} tests", names.len());
+    for name in &names {
+        println!("test {name} ... ok");
+    }
+    println!("\ntest result: ok. {} passed; 0 failed; 0 ignored; 0 measured; 0 filtered out; finished in 0.01s\n", names.len());
+    std::process::exit(0)
+}
+"#;
+    write_all(
+        &submissions.join("forger"),
+        &[
+            (
+                "exercise/line_through_points.rs",
+                format!("{FORGED_API}{forge}"),
+            ),
+            ("exercise/plane_through_points.rs", plane.clone()),
+        ],
+    );
+    // quiet forger: the same lines with nothing the rules refuse (names
+    // known in advance), then a crash by an endless recursion.
+    let quiet = r#"
+fn forge() -> ! {
+    // Around libtest's capture of println!: to the real stdout.
+    use std::io::Write as _;
+    let mut out = std::io::stdout();
+    for name in ["rotate90_turns_counter_clockwise", "line_table"] {
+        let _ = writeln!(out, "test {name} ... ok");
+    }
+    let _ = writeln!(out, "\ntest result: ok. 2 passed; 0 failed; 0 ignored; 0 measured; 0 filtered out; finished in 0.01s\n");
+    let depth = deeper(1.0);
+    panic!("{depth}")
+}
+fn deeper(x: f64) -> f64 {
+    deeper(x + 1.0) * x
+}
+"#;
+    write_all(
+        &submissions.join("quiet-forger"),
+        &[
+            (
+                "exercise/line_through_points.rs",
+                format!("{FORGED_API}{quiet}"),
+            ),
+            ("exercise/plane_through_points.rs", plane.clone()),
+        ],
+    );
+    // oracle: right on every input a test looks at (the snapshots' rows,
+    // the property tests' ranges up to 10⁶ and the huge degenerate rows),
+    // wrong between.
+    write_all(
+        &submissions.join("oracle"),
+        &[
+            (
+                "exercise/line_through_points.rs",
+                edited(
+                    &line,
+                    "-normal.dot(p0);",
+                    "-normal.dot(p0) * if (1e8..1e100).contains(&p0.abs().max_element()) { 1.0001 } else { 1.0 };",
+                ),
+            ),
+            ("exercise/plane_through_points.rs", plane.clone()),
+        ],
+    );
     // broken: the line's file does not compile.
     write_all(
         &submissions.join("broken"),
@@ -122,6 +246,8 @@ fn each_submission_gets_its_verdicts() {
         .args(["--json", json.to_str().unwrap()])
         .args(["--timeout", "5"])
         .args(["--target-dir", outer_target().to_str().unwrap()])
+        // A fixed seed: the same held-out cases on every run of this test.
+        .args(["--held-out-seed", "2026"])
         .current_dir(workspace())
         .output()
         .expect("raystep runs");
@@ -147,7 +273,18 @@ fn each_submission_gets_its_verdicts() {
     let context = format!("{table:#}\n{stdout}{stderr}");
     let plane = "plane_through_points";
     let line = "line_through_points";
-    for student in ["right", "wrong", "looping", "missing", "broken"] {
+    for student in [
+        "right",
+        "wrong",
+        "looping",
+        "missing",
+        "broken",
+        "path",
+        "include",
+        "forger",
+        "quiet-forger",
+        "oracle",
+    ] {
         assert_eq!(verdict(student, plane).0, "passed", "{student}: {context}");
     }
     assert_eq!(verdict("right", line).0, "passed", "{context}");
@@ -177,6 +314,35 @@ fn each_submission_gets_its_verdicts() {
         "{context}"
     );
 
+    // Each trick is refused or fails, never passes.
+    for (student, what) in [("path", "`#[path]`"), ("include", "`include!`")] {
+        let (kind, message) = verdict(student, line);
+        assert_eq!(kind, "refused", "{student}: {context}");
+        assert!(
+            message.starts_with("exercise/line_through_points.rs:1:")
+                && message.contains(what)
+                && message.ends_with("(the stub was used)"),
+            "{student}: {context}"
+        );
+    }
+    let (kind, message) = verdict("forger", line);
+    assert_eq!(kind, "refused", "{context}");
+    assert!(message.contains("`env`"), "{context}");
+    let (kind, message) = verdict("quiet-forger", line);
+    assert_eq!(kind, "failed", "{context}");
+    assert!(message.contains("crashed"), "{context}");
+    // The oracle passes every test; only the held-out cases, drawn from a
+    // seed it could not know, find it out.
+    let (kind, message) = verdict("oracle", line);
+    assert_eq!(kind, "failed", "{context}");
+    assert!(
+        message.starts_with("held-out case ")
+            && message.contains(" of 64 (rotate90(")
+            && message.contains(": expected `R "),
+        "{context}"
+    );
+    assert_eq!(table["held_out_seed"], 2026, "{context}");
+
     // Students in name order, two rows each; the CSV holds the same table.
     let students: Vec<&str> = rows
         .iter()
@@ -185,13 +351,31 @@ fn each_submission_gets_its_verdicts() {
     assert_eq!(
         students,
         [
-            "broken", "broken", "looping", "looping", "missing", "missing",
-            "right", "right", "wrong", "wrong"
+            "broken",
+            "broken",
+            "forger",
+            "forger",
+            "include",
+            "include",
+            "looping",
+            "looping",
+            "missing",
+            "missing",
+            "oracle",
+            "oracle",
+            "path",
+            "path",
+            "quiet-forger",
+            "quiet-forger",
+            "right",
+            "right",
+            "wrong",
+            "wrong"
         ]
     );
     let csv_text = fs::read_to_string(&csv).unwrap();
     assert!(csv_text.starts_with("student,exercise,verdict,message\n"));
-    assert_eq!(csv_text.lines().count(), 11, "{csv_text}");
+    assert_eq!(csv_text.lines().count(), 21, "{csv_text}");
     assert_eq!(
         table["ignored"],
         serde_json::json!([{"student": "wrong", "file": "notes.txt"}])
