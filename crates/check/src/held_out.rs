@@ -399,17 +399,16 @@ pub fn judge(
                     Some(Outcome::Panicked(why)) => {
                         Some(format!("{at}: panicked: {why}"))
                     }
-                    Some(Outcome::Answer(got)) => {
-                        (!agree(&expected, got, exercise.tolerance)).then(
-                            || {
-                                format!(
-                                    "{at}: expected `{}`, got `{}`",
-                                    shown(&expected),
-                                    shown(got)
-                                )
-                            },
-                        )
-                    }
+                    Some(Outcome::Answer(got)) => (!agree(
+                        &expected,
+                        got,
+                        exercise.tolerance,
+                    ))
+                    .then(|| {
+                        let (e, g) =
+                            difference(&expected, got, exercise.tolerance);
+                        format!("{at}: expected `{e}`, got `{g}`")
+                    }),
                 };
                 if first_failure.is_none() {
                     first_failure = failure;

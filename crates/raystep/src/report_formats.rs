@@ -342,6 +342,7 @@ mod tests {
                 change: Change::Modified,
             }],
             package_dir: "chapters/ch02".into(),
+            held_out_runner: None,
         }
     }
 
