@@ -150,3 +150,99 @@ fn from_git(root: &Path, relative: &Path) -> Result<Option<String>, Error> {
         Ok(_) => Ok(None),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn git(dir: &Path, args: &[&str]) {
+        let out = Command::new("git")
+            .args(["-c", "user.name=t", "-c", "user.email=t@t"])
+            .args(["-c", "commit.gpgsign=false"])
+            .args(args)
+            .current_dir(dir)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "git {args:?}");
+    }
+
+    /// A chapter `ch01` of package `ch01-a` with exercises `a` and `b`.
+    fn chapter() -> Chapter {
+        Chapter {
+            id: "ch01",
+            package: "ch01-a",
+            exercises: &["a", "b"],
+            ..*crate::chapters::CHAPTERS[0]
+        }
+    }
+
+    fn write(root: &Path, exercise: &str, text: &str) {
+        let path = root.join(format!("chapters/ch01-a/exercise/{exercise}.rs"));
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(path, text).unwrap();
+    }
+
+    /// An instructor tries exercise `a` in place: the committed stub is
+    /// taken, and the file is named.
+    #[test]
+    fn the_committed_stub_is_taken_not_the_solution_being_tried() {
+        let dir = tempfile::tempdir().unwrap();
+        let root = dir.path();
+        write(root, "a", "fn a() { todo!() }\n");
+        write(root, "b", "fn b() { todo!() }\n");
+        git(root, &["init", "--quiet"]);
+        git(root, &["add", "--all"]);
+        git(root, &["commit", "--quiet", "-m", "stubs"]);
+        write(root, "a", "fn a() { 42 }\n");
+        let chapter = chapter();
+        let stubs = committed(root, &[&chapter]).unwrap();
+        assert_eq!(stubs.text(&chapter, "a"), "fn a() { todo!() }\n");
+        assert_eq!(stubs.text(&chapter, "b"), "fn b() { todo!() }\n");
+        assert_eq!(
+            stubs.differing,
+            [PathBuf::from("chapters/ch01-a/exercise/a.rs")]
+        );
+        let note = stubs.note().unwrap();
+        assert!(
+            note.starts_with(
+                "note: one exercise file differs from the committed stub"
+            ) && note.ends_with("chapters/ch01-a/exercise/a.rs"),
+            "{note}"
+        );
+        // Written into a copy: exercise/ and, if asked, src/.
+        let copy = tempfile::tempdir().unwrap();
+        for folder in ["exercise", "src"] {
+            std::fs::create_dir_all(
+                copy.path().join("chapters/ch01-a").join(folder),
+            )
+            .unwrap();
+        }
+        stubs.write(copy.path(), &chapter, true).unwrap();
+        let read = |p: &str| {
+            std::fs::read_to_string(copy.path().join("chapters/ch01-a").join(p))
+                .unwrap()
+        };
+        assert_eq!(read("exercise/a.rs"), "fn a() { todo!() }\n");
+        assert_eq!(read("src/a.rs"), "fn a() { todo!() }\n");
+    }
+
+    /// Without git, a file is taken only while it is still a stub.
+    #[test]
+    fn without_git_a_solution_is_refused() {
+        let dir = tempfile::tempdir().unwrap();
+        let root = dir.path();
+        write(root, "a", "fn a() { todo!() }\n");
+        write(root, "b", "fn b() { 42 }\n");
+        let chapter = chapter();
+        let error = committed(root, &[&chapter]).unwrap_err().to_string();
+        assert_eq!(
+            error,
+            "chapters/ch01-a/exercise/b.rs: not in a git commit, and not a \
+             stub (no todo!() in it): restore the stub before exporting"
+        );
+        write(root, "b", "fn b() { todo!() }\n");
+        let stubs = committed(root, &[&chapter]).unwrap();
+        assert!(stubs.differing.is_empty());
+        assert_eq!(stubs.note(), None);
+    }
+}
