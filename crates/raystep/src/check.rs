@@ -141,48 +141,65 @@ pub fn check_chapter(
     let exercises: Vec<String> =
         chapter.exercises.iter().map(|e| e.to_string()).collect();
     let cargo = cargo_program();
-    let built = build(&cargo, root, chapter.package, run)?;
-    let mut held_out_runner = None;
+    let built =
+        build(&cargo, root, chapter.package, run, Artifacts::Workspace)?;
     let mut report = match built {
-        Ok(Built {
-            tests: executables,
-            examples,
-        }) => {
-            held_out_runner = examples
-                .into_iter()
-                .find(|(name, _)| *name == held_out_name(chapter))
-                .map(|(_, path)| path);
-            let threads = test_threads();
-            let context = Context {
-                workspace: Some(root.to_path_buf()),
-                package: Some(dir.clone()),
+        Ok(built) => run_built(root, chapter, run, built),
+        Err(failure) => {
+            // The exercises that compile are still judged, in a copy where
+            // the ones that do not are their stubs.
+            let others = if run.reference {
+                None
+            } else {
+                crate::compile_isolation::check_others(
+                    root, chapter, run, &failure,
+                )?
             };
-            let binaries: Vec<TestBinary> = executables
-                .iter()
-                .map(|executable| {
-                    if !run.quiet {
-                        eprintln!("     Running {}", executable.target);
-                    }
-                    run_tests(
-                        executable,
-                        &cargo,
-                        run.timeout,
-                        threads,
-                        &context,
-                    )
-                })
-                .collect();
-            report(&exercises, &binaries, &test_sources(&dir))
+            others.unwrap_or_else(|| Report::not_built(&exercises, failure))
         }
-        Err(failure) => Report::not_built(&exercises, failure),
     };
     if !run.reference {
         refuse_exercises(&mut report, &dir);
     }
-    report.held_out_runner = held_out_runner;
     report.changed_snapshots = snapshot_changes::changed_snapshots(&dir);
     report.package_dir = crate::relative(&dir);
     Ok(report)
+}
+
+/// Runs the test binaries of `chapter` that a build of the workspace at
+/// `root` made, and judges each exercise.
+pub(crate) fn run_built(
+    root: &Path,
+    chapter: &Chapter,
+    run: &Run,
+    built: Built,
+) -> Report {
+    let dir = root.join("chapters").join(chapter.package);
+    let exercises: Vec<String> =
+        chapter.exercises.iter().map(|e| e.to_string()).collect();
+    let cargo = cargo_program();
+    let threads = test_threads();
+    let context = Context {
+        workspace: Some(root.to_path_buf()),
+        package: Some(dir.clone()),
+    };
+    let binaries: Vec<TestBinary> = built
+        .tests
+        .iter()
+        .map(|executable| {
+            if !run.quiet {
+                eprintln!("     Running {}", executable.target);
+            }
+            run_tests(executable, &cargo, run.timeout, threads, &context)
+        })
+        .collect();
+    let mut report = report(&exercises, &binaries, &test_sources(&dir));
+    report.held_out_runner = built
+        .examples
+        .into_iter()
+        .find(|(name, _)| *name == held_out_name(chapter))
+        .map(|(_, path)| path);
+    report
 }
 
 /// Every exercise file in `dir/exercise/` that names another file, the
@@ -207,7 +224,14 @@ pub fn build_failure(
     chapter: &Chapter,
     run: &Run,
 ) -> Result<Option<BuildFailure>, Error> {
-    Ok(build(&cargo_program(), root, chapter.package, run)?.err())
+    Ok(build(
+        &cargo_program(),
+        root,
+        chapter.package,
+        run,
+        Artifacts::Workspace,
+    )?
+    .err())
 }
 
 /// The name of a chapter's held-out program: `examples/ch01_held_out.rs`
@@ -219,9 +243,9 @@ pub fn held_out_name(chapter: &Chapter) -> String {
 /// What a test build built to run: the test binaries, and the examples by
 /// name.
 #[derive(Debug, Clone, PartialEq, Eq)]
-struct Built {
-    tests: Vec<Executable>,
-    examples: Vec<(String, PathBuf)>,
+pub(crate) struct Built {
+    pub tests: Vec<Executable>,
+    pub examples: Vec<(String, PathBuf)>,
 }
 
 /// The text of every `tests/*.rs` of the package in `dir`, by file stem: to
@@ -246,13 +270,25 @@ pub(crate) fn cargo_program() -> String {
     std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_string())
 }
 
+/// Whose artifacts a build may share in its target folder.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Artifacts {
+    /// A workspace of its own: see [`separate_artifacts`].
+    Workspace,
+    /// A copy of the workspace in which only `package` differs (see
+    /// `crate::compile_isolation`): every other crate shares the
+    /// workspace's artifacts, `package` gets its own.
+    OwnPackage,
+}
+
 /// `cargo test --no-run -p <package> [--features exercise]` in the workspace
 /// root: the test executables it built, or why it built none.
-fn build(
+pub(crate) fn build(
     cargo: &str,
     root: &Path,
     package: &str,
     options: &Run,
+    artifacts: Artifacts,
 ) -> Result<Result<Built, BuildFailure>, Error> {
     let mut command = Command::new(cargo);
     command.current_dir(root).args([
@@ -282,7 +318,14 @@ fn build(
     if let Some(dir) = &options.target_dir {
         command.env("CARGO_TARGET_DIR", dir);
     }
-    command.args(separate_artifacts(root, options.target_dir.as_deref()));
+    match artifacts {
+        Artifacts::Workspace => command
+            .args(separate_artifacts(root, options.target_dir.as_deref())),
+        Artifacts::OwnPackage => command.args([
+            "--config".to_string(),
+            format!("profile.dev.package.\"{package}\".codegen-units=256"),
+        ]),
+    };
     let spawn_error = |source| Error::Spawn {
         program: cargo.to_string(),
         source,

@@ -19,8 +19,9 @@ use std::time::Duration;
 use raystep_figure::Chapter;
 use serde::Serialize;
 
-use crate::check::{self, BuildFailure, CargoFailure, Run};
+use crate::check::{self, CargoFailure, Run};
 use crate::committed_stubs::{self, Stubs};
+use crate::compile_isolation::{blamed_files, compile_message};
 use crate::{
     Error, atomic_file, held_out, shown, snapshot_changes, submission_rules,
     workspace, workspace_copy,
@@ -443,34 +444,6 @@ fn grade_student(
         .collect())
 }
 
-/// `chapters/<package>/exercise/x.rs:3:9` → `exercise/x.rs:3:9`.
-fn in_package<'a>(at: &'a str, package: &str) -> &'a str {
-    at.strip_prefix(&format!("chapters/{package}/"))
-        .unwrap_or(at)
-}
-
-/// The submitted exercises whose own file or test file holds a compiler
-/// error.
-fn blamed_files(
-    failure: &BuildFailure,
-    package: &str,
-    submitted: &[String],
-) -> Vec<String> {
-    submitted
-        .iter()
-        .filter(|exercise| {
-            failure.errors.iter().any(|error| {
-                error.at.as_deref().is_some_and(|at| {
-                    let at = in_package(at, package);
-                    at.starts_with(&format!("exercise/{exercise}.rs:"))
-                        || at.starts_with(&format!("tests/{exercise}.rs:"))
-                })
-            })
-        })
-        .cloned()
-        .collect()
-}
-
 /// When no error names a file: the submitted exercises that do not compile
 /// on their own, every other submitted file a stub.
 fn alone_failing(
@@ -508,22 +481,6 @@ fn alone_failing(
         fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
     }
     Ok(failing)
-}
-
-/// The first compiler error in the exercise's own files, else the build's
-/// first error.
-fn compile_message(
-    failure: &BuildFailure,
-    package: &str,
-    exercise: &str,
-) -> String {
-    let own = failure.errors.iter().find_map(|error| {
-        let at = in_package(error.at.as_deref()?, package);
-        (at.starts_with(&format!("exercise/{exercise}.rs:"))
-            || at.starts_with(&format!("tests/{exercise}.rs:")))
-        .then(|| format!("{} (at {at})", error.message))
-    });
-    own.unwrap_or_else(|| failure.failure.to_string())
 }
 
 /// The table as CSV: a header, then one row per student and exercise.
@@ -612,7 +569,6 @@ fn link_shared(root: &Path, scratch: &Path) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::check::CompileError;
 
     fn names(list: &[&str]) -> Vec<String> {
         list.iter().map(|s| s.to_string()).collect()
@@ -678,40 +634,6 @@ mod tests {
         let ignored: Vec<&str> =
             ignored.iter().map(|i| i.file.as_str()).collect();
         assert_eq!(ignored, [".hidden", "readme.txt"]);
-    }
-
-    #[test]
-    fn compiler_errors_blame_the_file_they_are_in() {
-        let failure = BuildFailure {
-            failure: CargoFailure::DoesNotCompile("error[E0308]".into()),
-            errors: vec![
-                CompileError {
-                    message: "error[E0425]: cannot find value `x`".into(),
-                    at: Some(
-                        "chapters/ch02-x/exercise/ray_plane.rs:9:5".into(),
-                    ),
-                },
-                CompileError {
-                    message: "error[E0061]: wrong arguments".into(),
-                    at: Some(
-                        "chapters/ch02-x/tests/inside_polygon.rs:3:1".into(),
-                    ),
-                },
-            ],
-        };
-        let submitted = names(&["ray_plane", "inside_polygon", "third"]);
-        assert_eq!(
-            blamed_files(&failure, "ch02-x", &submitted),
-            ["ray_plane", "inside_polygon"]
-        );
-        assert_eq!(
-            compile_message(&failure, "ch02-x", "ray_plane"),
-            "error[E0425]: cannot find value `x` (at exercise/ray_plane.rs:9:5)"
-        );
-        assert_eq!(
-            compile_message(&failure, "ch02-x", "third"),
-            "the tests do not compile: error[E0308]"
-        );
     }
 
     #[test]

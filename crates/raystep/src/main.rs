@@ -19,6 +19,7 @@ mod book;
 mod chapters;
 mod check;
 mod committed_stubs;
+mod compile_isolation;
 mod figures;
 mod grade;
 mod held_out;

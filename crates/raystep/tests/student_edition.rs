@@ -289,8 +289,9 @@ fn verdict<'a>(report: &'a str, exercise: &str) -> &'a str {
 /// `raystep check ch01` in the export: every exercise is the untouched
 /// stub. A wrong answer fails with the first wrong row even when the
 /// user's environment asks insta to accept or pass it, and no snapshot is
-/// written; a snapshot changed by hand is noticed (the export is a git
-/// repository).
+/// written; one exercise that does not compile leaves the other its
+/// verdict; a file that names another is refused; a snapshot changed by
+/// hand is noticed (the export is a git repository).
 #[test]
 fn check_in_the_export() {
     let export = export();
@@ -328,7 +329,7 @@ fn check_in_the_export() {
         .current_dir(export)
         .output()
         .unwrap();
-    fs::write(&file, stub).unwrap();
+    fs::write(&file, &stub).unwrap();
     let all = format!("{report}{stderr}");
     assert!(!ok, "{all}");
     let line = verdict(&report, "line_through_points");
@@ -345,6 +346,45 @@ fn check_in_the_export() {
         String::from_utf8_lossy(&changed.stdout).trim(),
         format!("M {chapter}/exercise/line_through_points.rs"),
         "only the student's file changed, no snapshot was written"
+    );
+
+    // One exercise that does not compile leaves the other its verdict:
+    // the right line passes, the broken plane names its error.
+    let plane_file = export
+        .join(chapter)
+        .join("exercise/plane_through_points.rs");
+    let plane_stub = fs::read_to_string(&plane_file).unwrap();
+    fs::write(&file, &reference).unwrap();
+    fs::write(&plane_file, "pub fn broken() -> f64 { \"x\" }\n").unwrap();
+    let (ok, report, stderr) = raystep(&["check", "ch01", "--quiet"], export);
+    fs::write(&plane_file, &plane_stub).unwrap();
+    let all = format!("{report}{stderr}");
+    assert!(!ok, "{all}");
+    assert_eq!(verdict(&report, "line_through_points"), "passed", "{all}");
+    let line = verdict(&report, "plane_through_points");
+    assert!(
+        line.starts_with("the tests do not compile: error[")
+            && line.ends_with("(at exercise/plane_through_points.rs:1:26)"),
+        "{all}"
+    );
+
+    // A file that takes the answer from elsewhere is refused, whatever its
+    // tests say.
+    fs::write(
+        &file,
+        "#[path = \"../src/line_through_points.rs\"]\nmod answer;\npub use answer::*;\n",
+    )
+    .unwrap();
+    let (ok, report, stderr) = raystep(&["check", "ch01", "--quiet"], export);
+    fs::write(&file, &stub).unwrap();
+    let all = format!("{report}{stderr}");
+    assert!(!ok, "{all}");
+    assert!(
+        verdict(&report, "line_through_points").starts_with(
+            "refused: exercise/line_through_points.rs:1:3: `#[path]` names \
+             another file"
+        ),
+        "{all}"
     );
 
     // A snapshot accepted by hand is not the reference: check says so.
