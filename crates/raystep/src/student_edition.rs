@@ -10,6 +10,9 @@
 //! the `exercise` feature of the chapters it builds on: chapter 2's tests
 //! then run on the student's own chapter 1.
 //!
+//! The held-out programs of `raystep grade` (`examples/chNN_held_out.rs`)
+//! are left out.
+//!
 //! The copy is made in a temporary folder beside OUT and renamed to OUT
 //! when complete, so OUT is never left half written.
 
@@ -91,6 +94,7 @@ pub fn export(
     for chapter in chapters {
         stubs.write(partial.path(), chapter, true)?;
         chain_exercise_feature(partial.path(), chapter, chapters)?;
+        drop_held_out(partial.path(), chapter)?;
     }
     let git = commit(partial.path())?;
     // The rename replaces an empty OUT; a non-empty one (made meanwhile)
@@ -122,6 +126,24 @@ fn refuse_non_empty(out: &Path) -> Result<(), Error> {
             ))),
         },
     }
+}
+
+/// Removes the chapter's held-out program (`examples/chNN_held_out.rs`,
+/// and `examples/` if nothing else is in it): it is `grade`'s, and its
+/// case generators work out answers of their own to keep their inputs
+/// clear of ambiguous ones.
+fn drop_held_out(copy: &Path, chapter: &Chapter) -> Result<(), Error> {
+    let examples = copy.join("chapters").join(chapter.package).join("examples");
+    let program =
+        examples.join(format!("{}.rs", crate::check::held_out_name(chapter)));
+    if program.exists() {
+        fs::remove_file(&program).map_err(|e| Error::io(&program, e))?;
+    }
+    if fs::read_dir(&examples).is_ok_and(|mut entries| entries.next().is_none())
+    {
+        fs::remove_dir(&examples).map_err(|e| Error::io(&examples, e))?;
+    }
+    Ok(())
 }
 
 /// The chapters the chapter's `Cargo.toml` depends on (its
