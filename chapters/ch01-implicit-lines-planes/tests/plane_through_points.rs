@@ -100,6 +100,38 @@ fn specific_errors() {
     }
 }
 
+/// Collinear means |E1×E2| ≤ COLLINEAR_SINE·|E1|·|E2|: the sine of the
+/// angle between the edges at most COLLINEAR_SINE, whatever their lengths
+/// and directions. Here the edges run along the diagonal (1, 1, 1), where
+/// an edge scaled to a largest component of 1 is √3 long: from (0, 0, 0)
+/// to (1, 1, 1) and to (1 + δ, 1 − δ, 1), at sin θ = δ·√6/3.
+#[test]
+fn collinear_is_the_sine_of_the_angle() {
+    let sine_per_delta = 6f64.sqrt() / 3.0;
+    for (k, expect_collinear) in [(0.5, true), (2.0, false)] {
+        let delta = k * ch01::COLLINEAR_SINE / sine_per_delta;
+        let p2 = v(1.0 + delta, 1.0 - delta, 1.0);
+        let got = Plane::through(DVec3::ZERO, DVec3::ONE, p2);
+        let what = format!(
+            "Plane::through((0, 0, 0), (1, 1, 1), (1 + δ, 1 − δ, 1)) with δ = \
+             {delta:e}: edges at sin θ = {k}·COLLINEAR_SINE"
+        );
+        if expect_collinear {
+            assert!(
+                got == Err(Degenerate::Collinear),
+                "{what}: expected Err(Collinear) (sin θ ≤ COLLINEAR_SINE), \
+                 got {got:?}"
+            );
+        } else {
+            assert!(
+                got.is_ok(),
+                "{what}: expected a plane (sin θ > COLLINEAR_SINE), got \
+                 {got:?}"
+            );
+        }
+    }
+}
+
 fn point() -> impl Strategy<Value = DVec3> {
     (-100.0..100.0f64, -100.0..100.0f64, -100.0..100.0f64)
         .prop_map(|(x, y, z)| v(x, y, z))

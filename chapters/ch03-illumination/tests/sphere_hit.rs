@@ -172,3 +172,96 @@ fn far_and_tiny_spheres() {
         first.unwrap_or_default()
     );
 }
+
+/// Directions that are not unit vectors: a = D·D is not 1, and a root is
+/// a distance divided by |D|. These rays decide by the root q/a (b > 0):
+/// from inside toward the centre (the near root is behind), and with the
+/// near root cut off.
+#[test]
+fn unnormalised_directions_by_hand() {
+    let unit = Sphere::new(v(0.0, 0.0, -5.0), 1.0);
+    #[rustfmt::skip]
+    let cases = [
+        // |D| = 2: the surface, 1.5 away, is reached at t = 0.75
+        ("from (0, 0, -4.5) along (0, 0, -2)", v(0.0, 0.0, -4.5), v(0.0, 0.0, -2.0), Interval::FORWARD, 0.75),
+        // |D| = 0.5: the roots 8 and 12; [9, 100] keeps the far one
+        ("from (0, 0, 0) along (0, 0, -0.5), t in [9, 100]", v(0.0, 0.0, 0.0), v(0.0, 0.0, -0.5), Interval::new(9.0, 100.0), 12.0),
+    ];
+    for (what, origin, direction, interval, t) in cases {
+        let hit = unit.intersect(&Ray::new(origin, direction), interval);
+        let got = hit.map(|h| h.t);
+        assert!(
+            got.is_some_and(|got| (got - t).abs() <= 1e-12 * t),
+            "the sphere at (0, 0, -5) of radius 1, {what}: expected a hit at \
+             t = {t}, got {}",
+            got.map_or("none".to_string(), |t| format!("t = {t}"))
+        );
+    }
+}
+
+/// The hit is the first root inside the interval, whichever of c/q and q/a
+/// it is: for a ray going away from the centre (b < 0) c/q is the larger.
+/// An interval reaching back to t = −10 holds both roots of a sphere
+/// behind the ray, at t = −6 and −4.
+#[test]
+fn the_first_root_in_the_interval_going_away() {
+    let unit = Sphere::new(v(0.0, 0.0, -5.0), 1.0);
+    let ray = Ray::new(v(0.0, 0.0, 0.0), v(0.0, 0.0, 1.0));
+    let got = unit
+        .intersect(&ray, Interval::new(-10.0, 10.0))
+        .map(|h| h.t);
+    assert!(
+        got == Some(-6.0),
+        "the sphere at (0, 0, -5) of radius 1, the ray from (0, 0, 0) along \
+         (0, 0, 1), t in [-10, 10] (roots -6 and -4): expected the first, \
+         t = -6, got {}",
+        got.map_or("none".to_string(), |t| format!("t = {t}"))
+    );
+}
+
+/// A ray that only touches the sphere, its discriminant exactly 0, hits it
+/// at the one (double) root: only a negative discriminant is a miss.
+#[test]
+fn a_touching_ray_hits() {
+    let unit = Sphere::new(v(0.0, 0.0, -5.0), 1.0);
+    for (direction, t) in [(v(0.0, 0.0, -1.0), 5.0), (v(0.0, 0.0, -2.0), 2.5)] {
+        let ray = Ray::new(v(1.0, 0.0, 0.0), direction);
+        let got = unit.intersect(&ray, Interval::FORWARD).map(|h| h.t);
+        assert!(
+            got.is_some_and(|got| (got - t).abs() <= 1e-12 * t),
+            "the sphere at (0, 0, -5) of radius 1, the ray from (1, 0, 0) \
+             along {direction} touching it at (1, 0, -5) (discriminant 0): \
+             expected a hit at t = {t}, got {}",
+            got.map_or("none".to_string(), |t| format!("t = {t}"))
+        );
+    }
+}
+
+proptest! {
+    #![proptest_config(seeded(256))]
+
+    /// A ray that starts on the sphere (a hit point, to rounding) and goes
+    /// in, as a refracted ray does, leaves it at t = 2·(C − P₀)·D / D·D.
+    /// Its c = |P₀ − C|² − r² is rounding noise, so of the two roots only
+    /// q/a with q = b + sign(b)·√Δ is precise: b − sign(b)·√Δ would cancel
+    /// to noise too, and c divided by it is no root at all.
+    #[test]
+    fn from_the_surface_inward_to_the_far_side(
+        cx in -10.0..10.0f64, cy in -10.0..10.0f64, cz in -10.0..10.0f64, r in 0.1..5.0f64,
+        normal in unit_vector(), aim in unit_vector(), length in 0.1..10.0f64,
+    ) {
+        let sphere = Sphere::new(v(cx, cy, cz), r);
+        let origin = sphere.center + r * normal;
+        // inward, at most about 70° from −normal (a chord of at least 2r/3)
+        let direction = (aim - 2.0 * normal).normalize() * length;
+        let exit = 2.0 * (sphere.center - origin).dot(direction) / direction.dot(direction);
+        // past the near root, which is rounding noise about 0
+        let interval = Interval::new(1e-6 * r / length, f64::INFINITY);
+        let got = sphere.intersect(&Ray::new(origin, direction), interval).map(|h| h.t);
+        prop_assert!(
+            got.is_some_and(|t| (t - exit).abs() * length <= 1e-9 * r),
+            "the sphere at {} of radius {r}, the ray from its surface point {origin} inward along {direction}, t ≥ {}: expected the far side at t = 2·(C − P₀)·D / D·D = {exit}, got {}",
+            sphere.center, interval.min, got.map_or("none".to_string(), |t| format!("t = {t}"))
+        );
+    }
+}

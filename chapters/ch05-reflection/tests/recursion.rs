@@ -718,7 +718,11 @@ fn no_weight_exceeds_one() {
                 deepest = deepest.max(r.path.depth);
             }
         }
-        assert!(deepest >= 2, "{name}: the test saw only depth {deepest}");
+        assert!(
+            deepest >= 2,
+            "{name}: expected rays at depth 2 or more (mirrors see each \
+             other), got none deeper than {deepest}"
+        );
     }
 }
 
@@ -803,8 +807,15 @@ fn reflected_rays_never_hit_their_own_surface() {
             let mut parent: Option<&LoggedRay> = None;
             for r in tree.iter().filter(|r| !r.shadow) {
                 if !r.is_primary() && r.cut.is_none() {
-                    let (_, source) = object_hit(parent.unwrap())
-                        .expect("the parent of a reflected ray hits a mirror");
+                    let Some((_, source)) = parent.and_then(object_hit) else {
+                        panic!(
+                            "{name}, pixel ({column}, {row}): expected a \
+                             reflected ray only where the ray before it hit \
+                             a mirror, got one from {} along {} after a ray \
+                             that hit nothing",
+                            r.origin, r.direction
+                        );
+                    };
                     checked += 1;
                     if let Some((t, object)) = object_hit(r) {
                         self_hits += usize::from(object == source);

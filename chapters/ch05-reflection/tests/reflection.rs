@@ -100,10 +100,13 @@ proptest! {
         let d = length * direction;
         let r = reflect_ray(d, n);
         let tolerance = 1e-12 * length;
-        prop_assert!((r.length() - d.length()).abs() <= tolerance, "|R| {} ≠ |D| {}", r.length(), d.length());
-        prop_assert!((r.dot(n) + d.dot(n)).abs() <= tolerance, "R·N {} ≠ −D·N {}", r.dot(n), -d.dot(n));
-        prop_assert!((r - d).cross(n).length() <= tolerance, "R − D = {} is not along N = {}", r - d, n);
-        prop_assert!((reflect_ray(d, -n) - r).length() <= tolerance, "−N gives another R");
-        prop_assert!((reflect_ray(r, n) - d).length() <= tolerance, "reflecting twice does not give D back");
+        let what = format!("reflect_ray(D = {d}, N = {n}) = R = {r}");
+        prop_assert!((r.length() - d.length()).abs() <= tolerance, "{what}: expected |R| = |D| = {}, got |R| = {}", d.length(), r.length());
+        prop_assert!((r.dot(n) + d.dot(n)).abs() <= tolerance, "{what}: expected R·N = −D·N = {}, got R·N = {}", -d.dot(n), r.dot(n));
+        prop_assert!((r - d).cross(n).length() <= tolerance, "{what}: expected R − D along N, got R − D = {}", r - d);
+        let flipped = reflect_ray(d, -n);
+        prop_assert!((flipped - r).length() <= tolerance, "{what}: expected the same R for −N, got {flipped}");
+        let back = reflect_ray(r, n);
+        prop_assert!((back - d).length() <= tolerance, "{what}: expected R reflected again to be D, got {back}");
     }
 }

@@ -160,11 +160,18 @@ fn coverage_tables() {
     );
     for (name, t) in triangles {
         let table = coverage_table(&t, 8, 8);
-        assert_eq!(
-            coverage_table(&reversed(&t), 8, 8),
-            table,
-            "{name}: the other winding covers other pixels"
-        );
+        let other = coverage_table(&reversed(&t), 8, 8);
+        if let Some((row, (a, b))) = table
+            .lines()
+            .zip(other.lines())
+            .enumerate()
+            .find(|(_, (a, b))| a != b)
+        {
+            panic!(
+                "{name}: expected the same pixels covered in the other \
+                 winding, got row {row} `{b}` instead of `{a}`"
+            );
+        }
         text.push_str(&format!(
             "\n{name}: {:?}, {} covered\n{table}",
             t.map(|c| (c.x, c.y)),
@@ -262,10 +269,11 @@ fn assert_tiles_the_square(
             }
         }
     }
-    assert_eq!(
-        (gaps, doubles, outside),
-        (0, 0, 0),
-        "{name}: (gaps, double hits, hits outside the square) should all be 0; counts:\n{}",
+    assert!(
+        (gaps, doubles, outside) == (0, 0, 0),
+        "{name}: expected every pixel of the square covered once and none \
+         outside it, got {gaps} gaps, {doubles} double hits and {outside} \
+         hits outside; counts:\n{}",
         count_text(&counts)
     );
 }
@@ -354,7 +362,7 @@ fn grid() -> Vec<[DVec2; 3]> {
 #[test]
 fn a_grid_of_split_squares_covers_each_pixel_once() {
     let grid = grid();
-    assert_eq!(grid.len(), 18);
+    assert_eq!(grid.len(), 18, "the test's grid: 9 squares of 2 triangles");
     assert_tiles_the_square("grid", &grid, 0.5, 9.5, 11);
     insta::assert_snapshot!(format!(
         "which triangle (two per square, squares row by row):\n{}\ncount:\n{}",

@@ -13,8 +13,16 @@ const INF: f64 = f64::INFINITY;
 #[test]
 fn a_new_buffer_is_infinitely_far_everywhere() {
     let buffer = DepthBuffer::new(5, 3);
-    assert_eq!(buffer.depths(), &[INF; 15][..]);
-    assert_eq!(buffer.get(4, 2), INF);
+    assert!(
+        buffer.depths() == [INF; 15],
+        "a new 5 × 3 buffer: expected +∞ at all 15 pixels, got {:?}",
+        buffer.depths()
+    );
+    let corner = buffer.get(4, 2);
+    assert!(
+        corner == INF,
+        "a new 5 × 3 buffer at (4, 2): expected +∞, got {corner}"
+    );
 }
 
 /// One pixel, surfaces arriving one after another: the closer one wins,

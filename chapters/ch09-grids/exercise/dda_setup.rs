@@ -4,6 +4,8 @@
 //! and how far apart those planes are (`t_delta`).
 //!
 //! Fill in `dda_setup`; `cargo run --release -- check ch09` judges it.
+#[allow(unused_imports, reason = "a Dda's t_max and t_delta are DVec3s")]
+use raystep_core::DVec3;
 use raystep_core::{Interval, Ray};
 
 use crate::{Dda, Lattice};
@@ -30,7 +32,8 @@ pub fn dda_setup(
     //      t_delta = −size / d (a distance in t is never negative).
     //    - d == 0 (also −0.0): step 0, t_max and t_delta +∞: the ray never
     //      crosses a plane of this axis (and never divides 0 by 0).
-    // 4. Return the Dda with t_enter and t_exit from step 1.
+    // 4. Return the Dda with t_enter and t_exit from step 1 (t_max and
+    //    t_delta as `DVec3::from_array([x, y, z])`).
     let _ = (lattice, ray, interval);
     todo!("ch09 exercise 1: dda_setup")
 }

@@ -83,35 +83,6 @@ pub struct Plane {
     pub counts: (usize, usize),
 }
 
-/// The builders' own copy of exercise 1 ([`crate::split_cost`]), so that
-/// building still works while the exercise is a stub; a test checks the
-/// two agree bit for bit.
-pub(crate) fn cost_reference(
-    node: &Aabb,
-    axis: usize,
-    plane: f64,
-    n_below: usize,
-    n_above: usize,
-    costs: &KdCosts,
-) -> f64 {
-    let (mut below, mut above) = (*node, *node);
-    below.max[axis] = plane;
-    above.min[axis] = plane;
-    let area = node.surface_area();
-    let (p_below, p_above) = if area > 0.0 {
-        (below.surface_area() / area, above.surface_area() / area)
-    } else {
-        (1.0, 1.0)
-    };
-    let bonus = if n_below == 0 || n_above == 0 {
-        costs.empty_bonus
-    } else {
-        0.0
-    };
-    let tests = p_below * n_below as f64 + p_above * n_above as f64;
-    costs.traversal + (1.0 - bonus) * costs.intersection * tests
-}
-
 // ANCHOR: sweep
 /// Sweeps one axis's sorted events of a node holding `count` objects and
 /// offers every plane strictly inside the node to `best` (the cheapest so
@@ -144,7 +115,8 @@ pub fn sweep(
                 (true, (below + planar, above)),
                 (false, (below, above + planar)),
             ] {
-                let cost = cost_reference(
+                // Exercise 1's cost (in student mode, the student's own).
+                let cost = crate::split_cost(
                     node, axis, position, counts.0, counts.1, costs,
                 );
                 if best.is_none_or(|b| cost < b.cost) {

@@ -78,35 +78,3 @@ mod stability;
 pub use stability::{
     Answers, KdRayCase, KdScene, answers, kd_disagreements, kd_rays, kd_scenes,
 };
-
-#[cfg(all(test, not(feature = "exercise")))]
-mod tests {
-    use raystep_core::{Aabb, DVec3};
-
-    use crate::KdCosts;
-
-    /// The builders' private copy of exercise 1 computes the same, bit
-    /// for bit.
-    #[test]
-    fn the_builders_copy_agrees() {
-        let b = |a: f64, c: f64| Aabb::new(DVec3::splat(a), DVec3::splat(c));
-        for costs in [KdCosts::PBRT_V3, KdCosts::WALD_HAVRAN] {
-            for (node, plane) in
-                [(b(0.0, 2.0), 0.5), (b(0.0, 0.0), 0.0), (b(-3.0, 7.0), 6.9)]
-            {
-                for (n, m) in [(0, 3), (1, 1), (5, 2), (4, 0)] {
-                    for axis in 0..3 {
-                        assert_eq!(
-                            crate::split_cost(&node, axis, plane, n, m, &costs)
-                                .to_bits(),
-                            crate::events::cost_reference(
-                                &node, axis, plane, n, m, &costs
-                            )
-                            .to_bits()
-                        );
-                    }
-                }
-            }
-        }
-    }
-}

@@ -74,29 +74,64 @@ fn step_table() {
     insta::assert_snapshot!(table.to_string());
 }
 
+/// Fails with `what: expected …, got …` (both as the table shows them)
+/// unless `got` is `expected`, its t values to rounding.
+#[track_caller]
+fn expect_step(what: &str, got: Step, expected: Step) {
+    let close = |a: f64, b: f64| a == b || (a - b).abs() <= 1e-12 * b.abs();
+    let same = match (got, expected) {
+        (Step::One(a), Step::One(b)) => a == b,
+        (
+            Step::Both {
+                near,
+                far,
+                near_until,
+                far_from,
+            },
+            Step::Both {
+                near: n,
+                far: f,
+                near_until: u,
+                far_from: from,
+            },
+        ) => {
+            (near, far) == (n, f)
+                && close(near_until, u)
+                && close(far_from, from)
+        }
+        _ => false,
+    };
+    assert!(
+        same,
+        "{what}: expected `{}`, got `{}`",
+        shown(expected),
+        shown(got)
+    );
+}
+
 /// A ray crossing the plane inside the node visits the side it comes
 /// from first, up to the plane, and pushes the other.
 #[test]
 fn near_first_then_far() {
-    let up = step(0.0, 1.0, 0.0, 10.0);
-    assert_eq!(
-        up,
+    expect_step(
+        "from x = 0 along +1 over t 0..10",
+        step(0.0, 1.0, 0.0, 10.0),
         Step::Both {
             near: 1,
             far: 7,
             near_until: 2.0,
-            far_from: 2.0
-        }
+            far_from: 2.0,
+        },
     );
-    let down = step(4.0, -0.5, 0.0, 10.0);
-    assert_eq!(
-        down,
+    expect_step(
+        "from x = 4 along -0.5 over t 0..10",
+        step(4.0, -0.5, 0.0, 10.0),
         Step::Both {
             near: 7,
             far: 1,
             near_until: 4.0,
-            far_from: 4.0
-        }
+            far_from: 4.0,
+        },
     );
 }
 
@@ -104,14 +139,15 @@ fn near_first_then_far() {
 #[test]
 fn lying_in_the_plane_visits_both_all_along() {
     for d in [0.0, -0.0] {
-        assert_eq!(
+        expect_step(
+            &format!("lying in the plane x = 2 (dir x {d:?}) over t 0.5..3"),
             step(2.0, d, 0.5, 3.0),
             Step::Both {
                 near: 1,
                 far: 7,
                 near_until: 3.0,
-                far_from: 0.5
-            }
+                far_from: 0.5,
+            },
         );
     }
 }
@@ -121,29 +157,94 @@ fn lying_in_the_plane_visits_both_all_along() {
 #[test]
 fn parallel_off_the_plane_stays_on_its_side() {
     for d in [0.0, -0.0] {
-        assert_eq!(step(1.0, d, 0.0, 10.0), Step::One(1));
-        assert_eq!(step(3.0, d, 0.0, 10.0), Step::One(7));
+        let what = format!("parallel (dir x {d:?}) over t 0..10");
+        let below = step(1.0, d, 0.0, 10.0);
+        expect_step(&format!("{what}, at x = 1"), below, Step::One(1));
+        let above = step(3.0, d, 0.0, 10.0);
+        expect_step(&format!("{what}, at x = 3"), above, Step::One(7));
     }
+}
+
+/// `EXIT_SLACK` widens the node by a relative 1e-9 at each end: a plane
+/// crossed just after `t_max`, or just before `t_min`, within that slack
+/// may be a crossing inside the node moved by rounding, so the ray goes
+/// into both children (one child too many is safe, one too few is not).
+/// At t 100 the slack is 1e-7; these rays cross 0.5e-7 outside.
+#[test]
+fn the_slack_keeps_both_children_at_the_ends() {
+    let t_plane = 100.0 + 0.5e-7;
+    expect_step(
+        "crossing x = 2 at t 100.00000005, over t 0..100 (within the \
+         slack EXIT_SLACK·|t_max| = 1e-7 after t_max)",
+        traversal_step(SPLIT, 2.0 - t_plane, 1.0, 0.0, 100.0),
+        Step::Both {
+            near: 1,
+            far: 7,
+            near_until: t_plane,
+            far_from: t_plane,
+        },
+    );
+    let t_plane = 100.0 - 0.5e-7;
+    expect_step(
+        "crossing x = 2 at t 99.99999995, over t 100..200 (within the \
+         slack EXIT_SLACK·|t_min| = 1e-7 before t_min)",
+        traversal_step(SPLIT, 2.0 - t_plane, 1.0, 100.0, 200.0),
+        Step::Both {
+            near: 1,
+            far: 7,
+            near_until: t_plane,
+            far_from: t_plane,
+        },
+    );
+}
+
+/// The slack is relative, so at t 0 there is none, and a crossing at
+/// t_max = 0 exactly is not after the node: a ray starting on the plane,
+/// in a node it only touches (t 0..0), goes into both children.
+#[test]
+fn a_crossing_at_t_max_is_not_after_it() {
+    expect_step(
+        "starting on the plane x = 2 along +1 over t 0..0 (t_plane = \
+         t_max = 0, not after it)",
+        step(2.0, 1.0, 0.0, 0.0),
+        Step::Both {
+            near: 1,
+            far: 7,
+            near_until: 0.0,
+            far_from: 0.0,
+        },
+    );
 }
 
 /// The whole walk, with the student's step, on the bunny and on the
 /// catalogue's rays made from its planes: the same answers as brute
-/// force.
+/// force. The tree is the median one: the SAH builders weigh planes with
+/// exercise 1's `split_cost`, and this test judges exercise 2 alone.
 #[test]
 fn the_walk_agrees_with_brute_force_on_the_bunny() {
     let objects: Vec<_> = ch10::kd_scenes(&common::bunny()).remove(0).objects;
     let tree =
-        KdTree::for_objects(&objects, KdBuilder::SahEvents, KdCosts::CHOSEN);
+        KdTree::for_objects(&objects, KdBuilder::Median, KdCosts::CHOSEN);
     let trees: [&dyn Accelerator; 1] = [&tree];
     let mut wrong = 0;
+    let mut rays = 0;
     for case in kd_rays(&tree, 30, 7) {
+        rays += case.rays.len();
         wrong += kd_disagreements(&trees, &objects, &case.rays)[0];
     }
-    assert_eq!(wrong, 0);
+    assert!(
+        wrong == 0,
+        "the kd-tree's walk on the bunny: expected brute force's answers \
+         (closest hit, any hit) for all {rays} rays, got others for {wrong}"
+    );
     // and one ray by hand: down the z axis onto the bunny's middle
     let ray = Ray::new(DVec3::new(-0.02, 0.1, 1.0), DVec3::new(0.0, 0.0, -1.0));
     let hit = tree.closest_hit(&objects, &ray, Interval::FORWARD);
     let brute = ch03::BruteForce.closest_hit(&objects, &ray, Interval::FORWARD);
-    assert_eq!(hit.map(|h| h.1.t), brute.map(|h| h.1.t));
-    assert!(hit.is_some());
+    let (hit, brute) = (hit.map(|h| h.1.t), brute.map(|h| h.1.t));
+    assert!(
+        brute.is_some() && hit == brute,
+        "down the z axis onto the bunny's middle: expected the hit at t \
+         {brute:?} (brute force), got {hit:?}"
+    );
 }

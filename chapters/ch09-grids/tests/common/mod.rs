@@ -1,6 +1,9 @@
-//! What the chapter's test files share: the bunny, and objects.
+//! What the chapter's test files share: the bunny, objects, and the
+//! DDA's setup to judge exercise 1 by.
 #![allow(dead_code)]
 use std::path::Path;
+
+pub mod setup;
 
 use ch09::{DVec3, Object};
 use raystep_scene::{Mesh, Shape};
