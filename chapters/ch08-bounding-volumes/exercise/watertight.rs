@@ -1,4 +1,6 @@
 //! Exercise 2: the watertight ray–triangle test.
+#[allow(unused_imports)]
+use ch02::owns_boundary;
 use raystep_core::{DVec2, DVec3, Interval, Ray};
 
 // ANCHOR: watertight
@@ -47,8 +49,9 @@ pub(crate) fn sheared_hit(
     // 5. None if some eᵢ > 0 and some eᵢ < 0 (outside), or if
     //    det = e0 + e1 + e2 is 0 (seen edge-on) or not finite.
     // 6. For each eᵢ == 0 the ray is on that edge: None unless the
-    //    triangle owns it, `ch02::owns_boundary(from, to)` with the edge
-    //    walked as listed if det > 0, reversed if det < 0.
+    //    triangle owns it, `owns_boundary(from, to)` (chapter 2's tie
+    //    rule) with the edge walked as listed if det > 0, reversed if
+    //    det < 0 (the ray sees the triangle clockwise).
     // 7. t = (e0·za + e1·zb + e2·zc) / det, if the interval contains it.
     let _ = (sheared, interval, edge_function);
     todo!("ch08 exercise 2: watertight")

@@ -195,8 +195,18 @@ fn corners_of_a_box_and_collinear_points() {
         let r_min = 0.5 * min.distance(max);
         let s = check(&name, &corners, r_min);
         let by_box = BoundingSphere::around_points_by_box(&corners);
-        assert!((by_box.radius - r_min).abs() <= 1e-12 * r_min.max(1.0));
-        assert!(s.radius <= by_box.radius * (1.0 + 1e-12), "{name}");
+        assert!(
+            (by_box.radius - r_min).abs() <= 1e-12 * r_min.max(1.0),
+            "{name}: the box's circumsphere should be the smallest sphere, \
+             radius {r_min}, got {by_box:?}"
+        );
+        assert!(
+            s.radius <= by_box.radius * (1.0 + 1e-12),
+            "{name}: expected a radius at most the box's circumsphere's {} \
+             (here the smallest sphere), got {}",
+            by_box.radius,
+            s.radius
+        );
     }
     // points on a segment, in a shuffled order: the smallest sphere has
     // the segment as its diameter
@@ -345,7 +355,11 @@ fn the_lecture_sketch() {
         assert_eq!((b.min.z, b.max.z), (0.0, 0.0), "{name}");
         assert_eq!(by_box, BoundingSphere::around_box(&b), "{name}");
         assert_holds_all(name, points, &by_box);
-        assert!(tight.center.z.abs() < 1e-12, "{name}: {tight:?}");
+        assert!(
+            tight.center.z.abs() < 1e-12,
+            "{name}, points in the plane z = 0: expected the tight sphere's \
+             centre in that plane too, got {tight:?}"
+        );
         check(name, points, r_min);
     }
 }
@@ -373,7 +387,13 @@ proptest! {
         let s = sphere_of_points(&points);
         assert_holds_all("a random cloud", &points, &s);
         let half = half_diameter(&points);
-        prop_assert!(s.radius >= half * (1.0 - 1e-9) - slack(&s));
-        prop_assert!(s.radius <= 3f64.sqrt() * half + slack(&s));
+        prop_assert!(
+            s.radius >= half * (1.0 - 1e-9) - slack(&s)
+                && s.radius <= 3f64.sqrt() * half + slack(&s),
+            "a random cloud of {count} points: expected a radius between \
+             half the largest distance between two points, {half}, and √3 \
+             × that, {}, got {s:?}",
+            3f64.sqrt() * half
+        );
     }
 }

@@ -94,7 +94,7 @@ fn every_dominant_axis_and_sign() {
             assert_eq!(
                 watertight(&tri, &beside, Interval::FORWARD),
                 None,
-                "a ray along {d} beside the triangle"
+                "a ray along {d} beside the triangle: expected None (a miss)"
             );
         }
     }
@@ -119,7 +119,8 @@ fn misses_and_the_interval() {
         assert_eq!(
             watertight(&TRIANGLE, &ray, Interval::FORWARD),
             None,
-            "a ray aimed at barycentric ({u}, {w}), outside the triangle"
+            "a ray aimed at barycentric ({u}, {w}), outside the triangle: \
+             expected None (a miss)"
         );
     }
     let centroid = at(&TRIANGLE, 1.0 / 3.0, 1.0 / 3.0);
@@ -127,18 +128,18 @@ fn misses_and_the_interval() {
     assert_eq!(
         watertight(&TRIANGLE, &ray, Interval::new(0.0, 0.999)),
         None,
-        "t = 1 is beyond the interval's max 0.999"
+        "t = 1 is beyond the interval's max 0.999: expected None"
     );
     assert_eq!(
         watertight(&TRIANGLE, &ray, Interval::new(1.001, f64::INFINITY)),
         None,
-        "t = 1 is before the interval's min 1.001"
+        "t = 1 is before the interval's min 1.001: expected None"
     );
     let away = Ray::new(from, from - centroid);
     assert_eq!(
         watertight(&TRIANGLE, &away, Interval::FORWARD),
         None,
-        "a ray pointing away from the triangle"
+        "a ray pointing away from the triangle: expected None"
     );
     // parallel to the plane, a little above it
     let normal = (TRIANGLE[1] - TRIANGLE[0])
@@ -148,84 +149,274 @@ fn misses_and_the_interval() {
     assert_eq!(
         watertight(&TRIANGLE, &parallel, Interval::UNIVERSE),
         None,
-        "a ray parallel to the triangle's plane, 0.1 above it"
+        "a ray parallel to the triangle's plane, 0.1 above it: expected \
+         None"
     );
     let nan = Ray::new(v(f64::NAN, 0.0, 10.0), centroid - from);
     assert_eq!(
         watertight(&TRIANGLE, &nan, Interval::FORWARD),
         None,
-        "a NaN origin"
+        "a NaN origin: expected None"
     );
     let nan = Ray::new(from, v(0.1, f64::NAN, -1.0));
     assert_eq!(
         watertight(&TRIANGLE, &nan, Interval::FORWARD),
         None,
-        "a NaN direction"
+        "a NaN direction: expected None"
     );
 }
 
-/// Exact ties: flat triangles with small integer corners and rays straight
-/// down (or up) at a shared edge or a shared vertex, where the edge
-/// functions are exactly 0. Exactly one triangle owns each such point.
-#[test]
-fn a_shared_edge_or_vertex_belongs_to_exactly_one_triangle() {
-    // a square split into four triangles around its centre, and a hexagon
-    // split into six around its centre, all counter-clockwise from +z
-    let c = v(1.0, 1.0, 0.0);
-    let square = [
-        v(0.0, 0.0, 0.0),
-        v(2.0, 0.0, 0.0),
-        v(2.0, 2.0, 0.0),
-        v(0.0, 2.0, 0.0),
-    ];
-    let hexagon = [
-        v(2.0, 0.0, 0.0),
-        v(1.5, 1.0, 0.0),
-        v(0.5, 1.0, 0.0),
-        v(0.0, 0.0, 0.0),
-        v(0.5, -1.0, 0.0),
-        v(1.5, -1.0, 0.0),
-    ];
-    let hex_centre = v(1.0, 0.0, 0.0);
-    let fan = |centre: DVec3, rim: &[DVec3]| -> Vec<[DVec3; 3]> {
-        (0..rim.len())
+/// A flat mesh for exact ties: its triangles and the points on its shared
+/// edges and vertices that the tests aim at, every coordinate a short
+/// binary fraction.
+struct FlatMesh {
+    name: &'static str,
+    triangles: Vec<[DVec3; 3]>,
+    targets: Vec<DVec3>,
+}
+
+/// `(a, b, c)` with `c` along `axis` and `a`, `b` along the two axes after
+/// it (a cyclic turn of x, y, z: windings are kept).
+fn on_axis(axis: usize, (a, b, c): (f64, f64, f64)) -> DVec3 {
+    let mut p = DVec3::ZERO;
+    (p[(axis + 1) % 3], p[(axis + 2) % 3], p[axis]) = (a, b, c);
+    p
+}
+
+/// A square split into four triangles around its centre and a hexagon
+/// split into six, counter-clockwise seen from +`axis`, in the plane
+/// coordinate[axis] = 0. Aimed at: the centre vertex, each shared edge's
+/// midpoint and a point a quarter along it.
+fn fans(axis: usize) -> Vec<FlatMesh> {
+    let at = |a: f64, b: f64| on_axis(axis, (a, b, 0.0));
+    let fan = |name, centre: DVec3, rim: &[DVec3]| {
+        let triangles: Vec<[DVec3; 3]> = (0..rim.len())
             .map(|i| [centre, rim[i], rim[(i + 1) % rim.len()]])
-            .collect()
-    };
-    let meshes = [
-        (fan(c, &square), c),
-        (fan(hex_centre, &hexagon), hex_centre),
-    ];
-    for (mesh, centre) in &meshes {
-        // the centre vertex, each shared edge's midpoint and a point a
-        // quarter along it
-        let mut targets = vec![*centre];
-        for tri in mesh {
+            .collect();
+        let mut targets = vec![centre];
+        for tri in &triangles {
             targets.push(0.5 * (tri[0] + tri[1]));
             targets.push(0.75 * tri[0] + 0.25 * tri[1]);
         }
-        for target in targets {
-            for (dx, dy, dz) in [
-                (0.0, 0.0, -1.0),
-                (0.0, 0.0, 1.0),
-                (0.25, -0.5, -1.0),
-                (-0.5, 0.125, 2.0),
-            ] {
-                let d = v(dx, dy, dz);
+        FlatMesh {
+            name,
+            triangles,
+            targets,
+        }
+    };
+    let square = [at(0.0, 0.0), at(2.0, 0.0), at(2.0, 2.0), at(0.0, 2.0)];
+    let hexagon = [
+        at(2.0, 0.0),
+        at(1.5, 1.0),
+        at(0.5, 1.0),
+        at(0.0, 0.0),
+        at(0.5, -1.0),
+        at(1.5, -1.0),
+    ];
+    vec![
+        fan("a square fan", at(1.0, 1.0), &square),
+        fan("a hexagon fan", at(1.0, 0.0), &hexagon),
+    ]
+}
+
+/// Two triangles sharing the diagonal edge P → Q, both listing it in that
+/// order, so that they wind opposite ways (one counter-clockwise seen from
+/// +`axis`, one clockwise): a mesh may mix windings. Aimed at points of
+/// the shared edge.
+fn opposite_windings(axis: usize) -> FlatMesh {
+    let at = |a: f64, b: f64| on_axis(axis, (a, b, 0.0));
+    let (p, q) = (at(0.0, 0.0), at(2.0, 2.0));
+    FlatMesh {
+        name: "two triangles wound opposite ways, [P, Q, R] and [P, Q, S]",
+        triangles: vec![[p, q, at(0.0, 2.0)], [p, q, at(2.0, 0.0)]],
+        targets: vec![at(1.0, 1.0), at(0.5, 0.5), at(1.5, 1.5)],
+    }
+}
+
+/// Directions toward the plane coordinate[axis] = 0: straight down and up
+/// along `axis`, and tilted ones (with components of both signs).
+fn tie_directions(axis: usize) -> Vec<DVec3> {
+    [
+        (0.0, 0.0, -1.0),
+        (0.0, 0.0, 1.0),
+        (0.25, -0.5, -1.0),
+        (-0.5, 0.125, 2.0),
+        (0.75, 0.5, 1.0),
+        (-0.25, -0.75, -2.0),
+    ]
+    .map(|d| on_axis(axis, d))
+    .to_vec()
+}
+
+/// `[a, b, c]`, each corner as x, y, z to the last bit.
+fn corners(tri: &[DVec3; 3]) -> String {
+    let [a, b, c] = tri.map(|p| p.to_string());
+    format!("[{a}, {b}, {c}]")
+}
+
+/// Which of `triangles` the ray hits (forward).
+fn hit_by(triangles: &[[DVec3; 3]], ray: &Ray) -> Vec<usize> {
+    (0..triangles.len())
+        .filter(|&k| {
+            watertight(&triangles[k], ray, Interval::FORWARD).is_some()
+        })
+        .collect()
+}
+
+/// Exact ties: flat triangles with small binary-fraction corners and rays
+/// at a shared edge or a shared vertex, where the edge functions are
+/// exactly 0. Exactly one triangle owns each such point.
+#[test]
+fn a_shared_edge_or_vertex_belongs_to_exactly_one_triangle() {
+    for axis in 0..3 {
+        for mesh in fans(axis) {
+            for &target in &mesh.targets {
+                for d in tie_directions(axis) {
+                    let ray = Ray::new(target - 4.0 * d, d);
+                    let hits = hit_by(&mesh.triangles, &ray);
+                    assert_eq!(
+                        hits.len(),
+                        1,
+                        "{}: a ray along {d} at {target}, on a shared edge \
+                         or vertex: expected exactly one triangle to own it, \
+                         got hits from triangles {hits:?}",
+                        mesh.name
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Two triangles that list their shared edge the same way round wind
+/// opposite ways: whichever way the ray comes, it sees one of them
+/// clockwise (det < 0). That one must walk its edges the other way round
+/// before the tie rule, or both would own the edge (2 hits) or neither
+/// (a leak).
+#[test]
+fn triangles_wound_opposite_ways_share_an_edge_once() {
+    for axis in 0..3 {
+        let mesh = opposite_windings(axis);
+        for &target in &mesh.targets {
+            for d in tie_directions(axis) {
                 let ray = Ray::new(target - 4.0 * d, d);
-                let hits = mesh
-                    .iter()
-                    .filter(|tri| {
-                        watertight(tri, &ray, Interval::FORWARD).is_some()
-                    })
-                    .count();
+                let hits = hit_by(&mesh.triangles, &ray);
                 assert_eq!(
-                    hits, 1,
-                    "a ray along {d} at {target}, on a shared edge or \
-                     vertex: expected exactly one triangle to own it"
+                    hits.len(),
+                    1,
+                    "{}, P = {}, Q = {}: a ray along {d} at {target} on the \
+                     shared edge: expected exactly 1 hit (the triangle the \
+                     ray sees clockwise walks its edges reversed before the \
+                     tie rule), got {} (from triangles {hits:?})",
+                    mesh.name,
+                    mesh.triangles[0][0],
+                    mesh.triangles[0][1],
+                    hits.len()
                 );
             }
         }
+    }
+}
+
+/// Step 1's axes for a direction: kz along the largest |component|, then
+/// kx and ky after it, swapped if the ray goes toward −kz.
+fn sheared_axes(d: DVec3) -> (usize, usize) {
+    let kz = d.abs().max_position();
+    let (kx, ky) = ((kz + 1) % 3, (kz + 2) % 3);
+    if d[kz] < 0.0 { (ky, kx) } else { (kx, ky) }
+}
+
+/// Which triangle owns a tie. Chapter 2's tie rule is the same as moving
+/// the point right by δ and up by δ²; in the sheared plane across the ray
+/// (x along kx, y along ky, the triangle keeping its winding as the ray
+/// sees it) that is moving the ray by δ along +kx and δ² along +ky. The
+/// moved ray is on no edge, so which triangle it hits is plain geometry:
+/// the ray on the edge must count for that same triangle. (Which one that
+/// is changes if the axes are not swapped for a ray toward −kz, if a
+/// clockwise triangle walks its edges as listed, or if the rule is
+/// inverted; the chapter's mesh walk, `PreparedRay`, shears with step 1's
+/// axes too, and must give the same triangle as `watertight`.)
+#[test]
+fn a_tie_goes_to_the_triangle_a_nudged_ray_hits() {
+    let delta = 2f64.powi(-10);
+    for axis in 0..3 {
+        let mut meshes = fans(axis);
+        meshes.push(opposite_windings(axis));
+        for mesh in &meshes {
+            for &target in &mesh.targets {
+                for d in tie_directions(axis) {
+                    let ray = Ray::new(target - 4.0 * d, d);
+                    let (kx, ky) = sheared_axes(d);
+                    let mut nudge = DVec3::ZERO;
+                    nudge[kx] = delta;
+                    nudge[ky] = delta * delta;
+                    let nudged = Ray::new(ray.origin + nudge, d);
+                    let owner = hit_by(&mesh.triangles, &nudged);
+                    assert_eq!(
+                        owner.len(),
+                        1,
+                        "test setup: {}, the ray along {d} at {target} \
+                         moved by {nudge} should hit one triangle",
+                        mesh.name
+                    );
+                    let hits = hit_by(&mesh.triangles, &ray);
+                    let names = ["x", "y", "z"];
+                    assert_eq!(
+                        hits,
+                        owner,
+                        "{}: a ray along {d} exactly through {target} (on a \
+                         shared edge or vertex): expected it to count for \
+                         triangle {} {}, the one the ray moved by 2⁻¹⁰ \
+                         along +{} and 2⁻²⁰ along +{} hits (chapter 2's tie \
+                         rule in step 1's sheared axes kx = {}, ky = {}), \
+                         got hits from triangles {hits:?}",
+                        mesh.name,
+                        owner[0],
+                        corners(&mesh.triangles[owner[0]]),
+                        names[kx],
+                        names[ky],
+                        names[kx],
+                        names[ky],
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// An edge function whose exact value is tiny but whose fast value, two
+/// rounded products subtracted, is exactly 0: the corners P and Q below
+/// (sheared by a ray along ±z to their own x and y) give
+/// P.x·Q.y − P.y·Q.x = −2⁻¹⁰⁴ exactly, while both products round to
+/// −(1 + 2⁻⁵¹). The ray passes 2⁻¹⁰⁴ inside triangle B, across the edge it
+/// shares with A: the sign must come from the exact fallback, not from
+/// the tie rule (which would hand the point to A).
+#[test]
+fn a_tiny_edge_function_gets_its_exact_sign() {
+    let u = f64::EPSILON; // 2⁻⁵²
+    let p = v(1.0 + u, 1.0 + 2.0 * u, 0.0);
+    let q = v(-1.0, -(1.0 + u), 0.0);
+    let a = [p, q, v(1.0, -1.0, 0.0)];
+    let b = [q, p, v(-1.0, 1.0, 0.0)];
+    for (origin, d) in [
+        (v(0.0, 0.0, -1.0), v(0.0, 0.0, 1.0)),
+        (v(0.0, 0.0, 1.0), v(0.0, 0.0, -1.0)),
+    ] {
+        let ray = Ray::new(origin, d);
+        let got = (
+            watertight(&a, &ray, Interval::FORWARD),
+            watertight(&b, &ray, Interval::FORWARD),
+        );
+        assert_eq!(
+            got,
+            (None, Some(1.0)),
+            "a ray from {origin} along {d} through (0, 0, 0), 2⁻¹⁰⁴ inside \
+             B = {} across the edge it shares with A = {} (the fast edge \
+             function rounds to 0 there; the exact one is −2⁻¹⁰⁴): expected \
+             (A, B) = (None, Some(1.0)), got {got:?}",
+            corners(&b),
+            corners(&a)
+        );
     }
 }
 
