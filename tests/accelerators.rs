@@ -43,7 +43,7 @@ impl BoxedList {
     }
 
     fn misses(&self, index: usize, ray: &Ray, interval: Interval) -> bool {
-        let miss = self.boxes[index].hit(ray, interval).is_none();
+        let miss = ch08::slab_test(&self.boxes[index], ray, interval).is_none();
         if miss {
             self.skipped.fetch_add(1, Ordering::Relaxed);
         }

@@ -23,8 +23,8 @@ const GAMMA_3: f64 =
 /// * `t_far` is pushed out by `1 + 2γ₃`, more than its rounding error, so
 ///   a ray through an edge or a corner is never rounded out of the box.
 ///
-/// The same algorithm as [`Aabb::hit`]; this is the chapter's copy,
-/// written out step by step.
+/// Every box test of the lecture is this one: the bounding boxes here,
+/// the hierarchies' nodes, chapter 9's grid and chapter 10's kd-tree.
 pub fn slab_test(b: &Aabb, ray: &Ray, interval: Interval) -> Option<Interval> {
     // TODO: an empty box is never hit. Then start from t0, t1 = interval
     // and for each axis:

@@ -7,7 +7,8 @@ use crate::{BoundingSphere, Primitive};
 /// A bounding volume: a box or a sphere.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Bound {
-    /// An axis-aligned box, hit by the robust slab test ([`Aabb::hit`]).
+    /// An axis-aligned box, hit by the robust slab test (exercise 1,
+    /// [`slab_test`](crate::slab_test)).
     Box(Aabb),
     /// A sphere ([`BoundingSphere::hit`]).
     Sphere(BoundingSphere),
@@ -17,7 +18,7 @@ impl Bound {
     /// The part of `interval` in which `ray` is inside the volume, or None.
     pub fn hit(&self, ray: &Ray, interval: Interval) -> Option<Interval> {
         match self {
-            Bound::Box(b) => b.hit(ray, interval),
+            Bound::Box(b) => crate::slab_test(b, ray, interval),
             Bound::Sphere(s) => s.hit(ray, interval),
         }
     }
@@ -77,8 +78,9 @@ pub struct TestCounts {
 /// The object is asked about the ray's whole interval, not only the part
 /// inside the bound, so a bounded object answers exactly what the object
 /// answers, for every ray whose bound test says yes. The box test never
-/// says no to a ray that meets the box ([`Aabb::hit`]); a sphere bound
-/// should be a little larger than the object where they touch.
+/// says no to a ray that meets the box ([`slab_test`](crate::slab_test));
+/// a sphere bound should be a little larger than the object where they
+/// touch.
 #[derive(Debug)]
 pub struct Bounded {
     object: Box<dyn Shape>,

@@ -98,6 +98,24 @@ pub const TRAVERSAL: f64 = 1.0;
 /// See [`TRAVERSAL`].
 pub const INTERSECTION: f64 = 1.0;
 
+/// The two costs of the surface area heuristic, as exercise 5 takes them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SahCosts {
+    /// One node visit.
+    pub traversal: f64,
+    /// One object test.
+    pub intersection: f64,
+}
+
+impl SahCosts {
+    /// The chapter's costs, [`TRAVERSAL`] and [`INTERSECTION`]: every
+    /// builder uses them.
+    pub const CHOSEN: SahCosts = SahCosts {
+        traversal: TRAVERSAL,
+        intersection: INTERSECTION,
+    };
+}
+
 /// A bounding volume hierarchy over a list of objects' boxes.
 ///
 /// It holds only boxes and indices: the objects are handed to its
@@ -207,34 +225,12 @@ pub(crate) fn bounded_objects(boxes: &[Aabb]) -> (Vec<u32>, Vec<u32>) {
     (order, unbounded)
 }
 
-/// The builders' copy of exercise 5's [`split_cost`](crate::split_cost):
-/// the builders call this one, so that they still work while the
-/// exercise is a stub (`src/sah_split.rs` has the same body, and a test
-/// that the two agree).
-pub(crate) fn split_cost_reference(
-    parent: &Aabb,
-    left: &Aabb,
-    n_left: usize,
-    right: &Aabb,
-    n_right: usize,
-) -> f64 {
-    let (n_left, n_right) = (n_left as f64, n_right as f64);
-    let area = parent.surface_area();
-    if area > 0.0 {
-        TRAVERSAL
-            + (left.surface_area() * n_left + right.surface_area() * n_right)
-                / area
-                * INTERSECTION
-    } else {
-        TRAVERSAL + (n_left + n_right) * INTERSECTION
-    }
-}
-
-/// Does `ray` meet the node's box within `interval`? The entry `t`.
+/// Does `ray` meet the node's box within `interval` (exercise 1's slab
+/// test)? The entry `t`.
 pub(crate) fn enter(
     node: &BvhNode,
     ray: &Ray,
     interval: Interval,
 ) -> Option<f64> {
-    node.bounds.hit(ray, interval).map(|inside| inside.min)
+    crate::slab_test(&node.bounds, ray, interval).map(|inside| inside.min)
 }

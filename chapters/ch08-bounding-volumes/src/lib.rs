@@ -116,7 +116,8 @@ mod sah_split;
 mod near_first;
 
 pub use bvh::{
-    AGGLOMERATIVE_LIMIT, Builder, Bvh, BvhNode, INTERSECTION, TRAVERSAL,
+    AGGLOMERATIVE_LIMIT, Builder, Bvh, BvhNode, INTERSECTION, SahCosts,
+    TRAVERSAL,
 };
 pub use bvh_build::MAX_LEAF;
 pub use bvh_stats::TreeStats;

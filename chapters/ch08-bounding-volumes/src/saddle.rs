@@ -98,7 +98,8 @@ fn saddle_roots(
     let half = 1.01 * DVec3::new(size, 2.0 * size, size);
     // (The whole line's stretch, not the interval's, so that the roots
     // do not depend on where the interval starts; see the torus.)
-    let Some(inside) = Aabb::new(-half, half).hit(
+    let Some(inside) = crate::slab_test(
+        &Aabb::new(-half, half),
         &Ray::new(ray.origin - center, ray.direction),
         Interval::UNIVERSE,
     ) else {

@@ -1,7 +1,7 @@
 //! Exercise 5: the SAH cost of one split.
 use raystep_core::Aabb;
 
-use crate::{INTERSECTION, TRAVERSAL};
+use crate::SahCosts;
 
 // ANCHOR: split_cost
 /// The surface area heuristic's cost of splitting a node with box
@@ -10,6 +10,8 @@ use crate::{INTERSECTION, TRAVERSAL};
 ///
 /// C = C_trav + (A(left)·N(left) + A(right)·N(right)) / A(parent) · C_isect
 ///
+/// with C_trav = `costs.traversal` and C_isect = `costs.intersection`
+/// (the builders pass [`SahCosts::CHOSEN`]).
 /// A ray that hits the parent hits a child with probability (for rays
 /// from every direction) the ratio of their surface areas; it then tests
 /// the child's objects. A flat or point-like parent (area 0) gives no
@@ -20,6 +22,7 @@ pub fn split_cost(
     n_left: usize,
     right: &Aabb,
     n_right: usize,
+    costs: &SahCosts,
 ) -> f64 {
     let (n_left, n_right) = (n_left as f64, n_right as f64);
     // Step 1: the parent's area; 0 means every child is hit for certain.
@@ -27,36 +30,12 @@ pub fn split_cost(
     if area > 0.0 {
         // Step 2: each child's chance of a hit times its objects' tests,
         // after the one visit of the parent.
-        TRAVERSAL
+        costs.traversal
             + (left.surface_area() * n_left + right.surface_area() * n_right)
                 / area
-                * INTERSECTION
+                * costs.intersection
     } else {
-        TRAVERSAL + (n_left + n_right) * INTERSECTION
+        costs.traversal + (n_left + n_right) * costs.intersection
     }
 }
 // ANCHOR_END: split_cost
-
-#[cfg(test)]
-mod tests {
-    use raystep_core::{Aabb, DVec3};
-
-    /// The builders' private copy computes the same, bit for bit.
-    #[test]
-    fn the_builders_copy_agrees() {
-        let b = |a: f64, c: f64| Aabb::new(DVec3::splat(a), DVec3::splat(c));
-        for (p, l, r) in [
-            (b(0.0, 2.0), b(0.0, 1.0), b(1.0, 2.0)),
-            (b(0.0, 0.0), b(0.0, 0.0), b(0.0, 0.0)),
-            (b(-3.0, 7.0), b(-3.0, 0.1), b(0.5, 7.0)),
-        ] {
-            for (n, m) in [(0, 3), (1, 1), (5, 2)] {
-                assert_eq!(
-                    super::split_cost(&p, &l, n, &r, m).to_bits(),
-                    crate::bvh::split_cost_reference(&p, &l, n, &r, m)
-                        .to_bits()
-                );
-            }
-        }
-    }
-}

@@ -191,7 +191,8 @@ fn bracketed_roots(
     // the roots then do not depend on where the interval starts, so a
     // ray asked again from just past a hit (a shadow ray leaving the
     // surface) cannot find a new root of the rounding noise there.
-    let Some(inside) = bounds.hit(ray, Interval::UNIVERSE) else {
+    let Some(inside) = crate::slab_test(&bounds, ray, Interval::UNIVERSE)
+    else {
         return Vec::new();
     };
     if !(inside.min.is_finite() && inside.max.is_finite()) {

@@ -145,7 +145,7 @@ fn incoherent_rays_start_on_their_sphere_and_hit_the_box() {
         let r = ray.origin.distance(sphere.center);
         assert!((r - 1.5 * sphere.radius).abs() < 1e-9 * r);
         assert!((ray.direction.length() - 1.0).abs() < 1e-12);
-        assert!(b.hit(ray, Interval::FORWARD).is_some());
+        assert!(ch08::slab_test(&b, ray, Interval::FORWARD).is_some());
     }
     assert_eq!(incoherent_rays(b, 10, 1), rays[..10]);
     // the origins cover the sphere: each octant gets its share

@@ -1,13 +1,23 @@
 //! Exercise 5: the SAH cost of one split, on cases computed by hand.
-//! The builders use their own copy, so this test alone judges the
-//! exercise.
 //!
-//! Each expected cost is written with the crate's `TRAVERSAL` and
-//! `INTERSECTION`: C = TRAVERSAL + (ratio of areas × counts) ·
-//! INTERSECTION. Both are 1 (as in the lecture), so a solution that mixes
-//! them up, or divides by INTERSECTION instead of multiplying, gives the
-//! same numbers and cannot be told apart here.
-use ch08::{Aabb, DVec3, INTERSECTION, TRAVERSAL, split_cost};
+//! Each case is judged with the chapter's costs (both 1, as in the
+//! lecture) and with pbrt's (a visit 1/2, a test 1) and a third pair (a
+//! visit 3, a test 1/4), so that a solution that mixes the two up, or
+//! divides by a cost instead of multiplying, gives another number.
+use ch08::{Aabb, DVec3, SahCosts, split_cost};
+
+/// The costs every case is judged with.
+const COSTS: [SahCosts; 3] = [
+    SahCosts::CHOSEN,
+    SahCosts {
+        traversal: 0.5,
+        intersection: 1.0,
+    },
+    SahCosts {
+        traversal: 3.0,
+        intersection: 0.25,
+    },
+];
 
 fn cube(min: DVec3, side: f64) -> Aabb {
     Aabb::new(min, min + DVec3::splat(side))
@@ -22,25 +32,35 @@ fn show(b: &Aabb) -> String {
     }
 }
 
-/// `split_cost(parent, left, n_left, right, n_right)` is `expected` to
-/// within `tolerance`, else a message with both and why (`why`). A
+/// For each of [`COSTS`], `split_cost(parent, left, n_left, right,
+/// n_right, costs)` is `traversal + tests · intersection` to within
+/// `tolerance`, `tests` being the expected object tests (the ratio of
+/// areas times the counts), else a message with both and why (`why`). A
 /// failure is reported at the line that calls it.
 #[track_caller]
 fn assert_cost(
     (parent, left, n_left, right, n_right): (&Aabb, &Aabb, usize, &Aabb, usize),
-    expected: f64,
+    tests: f64,
     tolerance: f64,
     why: &str,
 ) {
-    let got = split_cost(parent, left, n_left, right, n_right);
-    assert!(
-        (got - expected).abs() <= tolerance,
-        "split_cost(parent {}, left {} with {n_left}, right {} with \
-         {n_right}): expected {expected} ({why}), got {got}",
-        show(parent),
-        show(left),
-        show(right)
-    );
+    for costs in &COSTS {
+        let expected = costs.traversal + tests * costs.intersection;
+        let got = split_cost(parent, left, n_left, right, n_right, costs);
+        assert!(
+            (got - expected).abs() <= tolerance,
+            "split_cost(parent {}, left {} with {n_left}, right {} with \
+             {n_right}, a visit {} and a test {}): expected {expected} \
+             ({} + {tests} tests · {}: {why}), got {got}",
+            show(parent),
+            show(left),
+            show(right),
+            costs.traversal,
+            costs.intersection,
+            costs.traversal,
+            costs.intersection,
+        );
+    }
 }
 
 /// A 2 × 1 × 1 box cut into two unit cubes: each child has area 6 of the
@@ -51,15 +71,15 @@ fn a_box_cut_in_half() {
     let (l, r) = (cube(DVec3::ZERO, 1.0), cube(DVec3::X, 1.0));
     assert_cost(
         (&parent, &l, 1, &r, 1),
-        TRAVERSAL + (6.0 * 1.0 + 6.0 * 1.0) / 10.0 * INTERSECTION,
+        (6.0 * 1.0 + 6.0 * 1.0) / 10.0,
         1e-12,
-        "1 + (6·1 + 6·1)/10 = 2.2: each child has area 6 of the parent's 10",
+        "(6·1 + 6·1)/10 = 1.2 tests: each child has area 6 of the parent's 10",
     );
     assert_cost(
         (&parent, &l, 3, &r, 5),
-        TRAVERSAL + (6.0 * 3.0 + 6.0 * 5.0) / 10.0 * INTERSECTION,
+        (6.0 * 3.0 + 6.0 * 5.0) / 10.0,
         1e-12,
-        "1 + (6·3 + 6·5)/10 = 5.8",
+        "(6·3 + 6·5)/10 = 4.8 tests",
     );
 }
 
@@ -74,16 +94,16 @@ fn children_of_different_sizes() {
     let r = Aabb::new(DVec3::X, DVec3::new(4.0, 1.0, 1.0));
     assert_cost(
         (&parent, &l, 1, &r, 7),
-        TRAVERSAL + (6.0 * 1.0 + 14.0 * 7.0) / 18.0 * INTERSECTION,
+        (6.0 * 1.0 + 14.0 * 7.0) / 18.0,
         1e-12,
-        "1 + (6·1 + 14·7)/18 = 6.777…: the small child's 1 object, the \
+        "(6·1 + 14·7)/18 = 5.777… tests: the small child's 1 object, the \
          large child's 7",
     );
     assert_cost(
         (&parent, &l, 7, &r, 1),
-        TRAVERSAL + (6.0 * 7.0 + 14.0 * 1.0) / 18.0 * INTERSECTION,
+        (6.0 * 7.0 + 14.0 * 1.0) / 18.0,
         1e-12,
-        "1 + (6·7 + 14·1)/18 = 4.111…: the small child's 7 objects, the \
+        "(6·7 + 14·1)/18 = 3.111… tests: the small child's 7 objects, the \
          large child's 1",
     );
 }
@@ -95,9 +115,9 @@ fn children_as_large_as_the_parent() {
     let unit = cube(DVec3::ZERO, 1.0);
     assert_cost(
         (&unit, &unit, 2, &unit, 3),
-        TRAVERSAL + 5.0 * INTERSECTION,
+        5.0,
         0.0,
-        "1 + (6·2 + 6·3)/6 = 6: both children certain to be hit",
+        "(6·2 + 6·3)/6 = 5 tests: both children certain to be hit",
     );
 }
 
@@ -107,10 +127,9 @@ fn children_as_large_as_the_parent() {
 fn an_empty_side() {
     let parent = cube(DVec3::ZERO, 2.0); // area 24
     let l = cube(DVec3::ZERO, 1.0); // area 6
-    let why = "1 + (6·4 + 0)/24 = 2: the empty side adds nothing";
-    let expected = TRAVERSAL + 1.0 * INTERSECTION;
-    assert_cost((&parent, &l, 4, &Aabb::EMPTY, 0), expected, 0.0, why);
-    assert_cost((&parent, &Aabb::EMPTY, 0, &l, 4), expected, 0.0, why);
+    let why = "(6·4 + 0)/24 = 1 test: the empty side adds nothing";
+    assert_cost((&parent, &l, 4, &Aabb::EMPTY, 0), 1.0, 0.0, why);
+    assert_cost((&parent, &Aabb::EMPTY, 0, &l, 4), 1.0, 0.0, why);
 }
 
 /// A parent of zero area (a point, or a segment): both children count as
@@ -120,16 +139,16 @@ fn a_parent_of_zero_area() {
     let point = Aabb::new(DVec3::ONE, DVec3::ONE);
     assert_cost(
         (&point, &point, 3, &point, 4),
-        TRAVERSAL + 7.0 * INTERSECTION,
+        7.0,
         0.0,
-        "a point has area 0: 1 + (3 + 4) = 8, every object tested",
+        "a point has area 0: 3 + 4 = 7 tests, every object tested",
     );
     let segment = Aabb::new(DVec3::ZERO, DVec3::X);
     assert_cost(
         (&segment, &segment, 1, &point, 1),
-        TRAVERSAL + 2.0 * INTERSECTION,
+        2.0,
         0.0,
-        "a segment has area 0: 1 + (1 + 1) = 3, every object tested",
+        "a segment has area 0: 1 + 1 = 2 tests, every object tested",
     );
 }
 
@@ -141,8 +160,8 @@ fn far_from_the_origin() {
     let (l, r) = (cube(offset, 1.0), cube(offset + DVec3::X, 1.0));
     assert_cost(
         (&parent, &l, 1, &r, 1),
-        TRAVERSAL + 1.2 * INTERSECTION,
+        1.2,
         1e-9,
-        "the box cut in half, moved to 1e6: 2.2 as at the origin",
+        "the box cut in half, moved to 1e6: 1.2 tests as at the origin",
     );
 }

@@ -378,7 +378,8 @@ fn saddle_near_tangent_rays() {
             }
         }
         // Does y − h change sign along the ray inside the box?
-        let Some(inside) = bounds.hit(ray, Interval::FORWARD) else {
+        let Some(inside) = ch08::slab_test(&bounds, ray, Interval::FORWARD)
+        else {
             continue;
         };
         let mut samples: Vec<f64> = (0..=64)

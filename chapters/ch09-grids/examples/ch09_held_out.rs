@@ -70,15 +70,19 @@ fn random_grid(rng: &mut Rng) -> GridCase {
         }
         let ray = Ray::new(origin, direction);
         let t_scale = extent.max_element() / direction.length();
-        let interval = match lattice.bounds.hit(&ray, Interval::FORWARD) {
-            Some(inside) if rng.chance(0.4) => {
-                // a stretch that begins or ends inside the grid, or both
-                let span = inside.max - inside.min;
-                let lo = inside.min + span * rng.uniform(-0.5, 0.8);
-                Interval::new(lo.max(0.0), lo + span * rng.uniform(0.1, 1.0))
-            }
-            _ => Interval::FORWARD,
-        };
+        let interval =
+            match ch08::slab_test(&lattice.bounds, &ray, Interval::FORWARD) {
+                Some(inside) if rng.chance(0.4) => {
+                    // a stretch that begins or ends inside the grid, or both
+                    let span = inside.max - inside.min;
+                    let lo = inside.min + span * rng.uniform(-0.5, 0.8);
+                    Interval::new(
+                        lo.max(0.0),
+                        lo + span * rng.uniform(0.1, 1.0),
+                    )
+                }
+                _ => Interval::FORWARD,
+            };
         if clear(&lattice, &ray, interval, t_scale) {
             return GridCase {
                 what: "a grid anywhere",
@@ -118,12 +122,12 @@ fn clear(
 ) -> bool {
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * t_scale.max(a.abs());
     let b = &lattice.bounds;
-    let hit = b.hit(ray, interval);
+    let hit = ch08::slab_test(b, ray, interval);
     // the box and the interval 1e-9 larger and smaller: the same answer
     let (c, h) = ((b.min + b.max) / 2.0, (b.max - b.min) / 2.0);
     for k in [1.0 - 1e-9, 1.0 + 1e-9] {
         let other = Aabb::new(c - h * k, c + h * k);
-        if other.hit(ray, interval).is_some() != hit.is_some() {
+        if ch08::slab_test(&other, ray, interval).is_some() != hit.is_some() {
             return false;
         }
         let pad = |x: f64| (k - 1.0) * x.abs().max(t_scale);
@@ -131,7 +135,7 @@ fn clear(
             interval.min - pad(interval.min),
             interval.max + pad(interval.max),
         );
-        if b.hit(ray, wider).is_some() != hit.is_some() {
+        if ch08::slab_test(b, ray, wider).is_some() != hit.is_some() {
             return false;
         }
     }

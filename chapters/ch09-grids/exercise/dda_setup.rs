@@ -4,6 +4,8 @@
 //! and how far apart those planes are (`t_delta`).
 //!
 //! Fill in `dda_setup`; `cargo run --release -- check ch09` judges it.
+#[allow(unused_imports, reason = "step 1 is chapter 8's slab test")]
+use ch08::slab_test;
 #[allow(unused_imports, reason = "a Dda's t_max and t_delta are DVec3s")]
 use raystep_core::DVec3;
 use raystep_core::{Interval, Ray};
@@ -19,9 +21,10 @@ pub fn dda_setup(
     interval: Interval,
 ) -> Option<Dda> {
     // TODO:
-    // 1. Clip the ray to the grid's box: `lattice.bounds.hit(ray,
-    //    interval)` gives the part of the interval inside it (its `min`
-    //    is where the ray enters, its `max` where it leaves), or None.
+    // 1. Clip the ray to the grid's box: chapter 8's
+    //    `slab_test(&lattice.bounds, ray, interval)` gives the part of the
+    //    interval inside it (its `min` is where the ray enters, its `max`
+    //    where it leaves), or None.
     // 2. The first cell: `lattice.cell_of(ray.at(entry t))`.
     // 3. For each axis, with d = ray.direction[axis]:
     //    - d > 0: step +1; the next plane is `lattice.plane(axis,

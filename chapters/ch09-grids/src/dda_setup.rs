@@ -2,6 +2,7 @@
 //! traversal algorithm for ray tracing", 1987): the first cell, and per
 //! axis how far along the ray the next plane between cells is (`t_max`)
 //! and how far apart those planes are (`t_delta`).
+use ch08::slab_test;
 use raystep_core::{DVec3, Interval, Ray};
 
 use crate::{Dda, Lattice};
@@ -15,7 +16,7 @@ pub fn dda_setup(
     interval: Interval,
 ) -> Option<Dda> {
     // Step 1: clip the ray to the grid's box (chapter 8's slab test).
-    let inside = lattice.bounds.hit(ray, interval)?;
+    let inside = slab_test(&lattice.bounds, ray, interval)?;
     // Step 2: the first cell: the one holding the entry point.
     let cell = lattice.cell_of(ray.at(inside.min));
     // Step 3: per axis, the next plane in the ray's direction, and the

@@ -328,7 +328,7 @@ proptest! {
                 case, k, v.t_in, v.t_out
             );
         }
-        let Some(inside) = lattice.bounds.hit(&ray, interval) else {
+        let Some(inside) = ch08::slab_test(&lattice.bounds, &ray, interval) else {
             prop_assert!(
                 seen.is_empty(),
                 "{}: the ray misses the grid: expected no cells, got {}",

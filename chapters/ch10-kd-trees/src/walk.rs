@@ -43,7 +43,7 @@ pub fn kd_walk<'a>(
         return;
     }
     // Step 1: the stretch of the ray inside the root's box.
-    let Some(inside) = tree.bounds.hit(ray, interval) else {
+    let Some(inside) = ch08::slab_test(&tree.bounds, ray, interval) else {
         return;
     };
     let inverse = 1.0 / d;

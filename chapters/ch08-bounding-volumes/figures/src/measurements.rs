@@ -221,7 +221,11 @@ pub fn measure_costs(repeats: usize, step: &mut dyn FnMut()) -> Vec<CostRow> {
     for rays in [&bound_sets.0, &bound_sets.1] {
         jobs.push(Box::new(move || {
             for ray in rays {
-                black_box(box_bound.hit(black_box(ray), Interval::FORWARD));
+                black_box(ch08::slab_test(
+                    &box_bound,
+                    black_box(ray),
+                    Interval::FORWARD,
+                ));
             }
         }));
     }

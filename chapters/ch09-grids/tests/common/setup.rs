@@ -13,7 +13,7 @@ pub fn setup_fault(
     got: Option<&Dda>,
 ) -> Option<String> {
     // Step 1: the box clips the ray.
-    let (inside, got) = match (lattice.bounds.hit(ray, interval), got) {
+    let (inside, got) = match (ch08::slab_test(&lattice.bounds, ray, interval), got) {
         (None, None) => return None,
         (None, Some(_)) => {
             return Some(

@@ -510,8 +510,7 @@ fn kd_traversal() -> Figure {
         thing.draw(&mut page, DVec2::ZERO, fill, &stroke);
     }
     // the ray up to the hit, and dashed beyond it: never walked
-    let exit = root
-        .hit(&ray, Interval::FORWARD)
+    let exit = ch08::slab_test(&root, &ray, Interval::FORWARD)
         .map_or(hit.t, |inside| inside.max);
     page.segment(
         flat(ray.at(hit.t)),
