@@ -3,6 +3,8 @@
 use ch02::owns_boundary;
 use raystep_core::{DVec2, DVec3, Interval, Ray};
 
+use crate::Shear;
+
 // ANCHOR: watertight
 /// The `t` at which `ray` hits the triangle `v` within `interval`, by the
 /// watertight test of Woop, Benthin & Wald (JCGT 2(1), 2013).
@@ -21,18 +23,42 @@ pub fn watertight(
     ray: &Ray,
     interval: Interval,
 ) -> Option<f64> {
-    // TODO:
-    // 1. kz = the axis of D's largest |component| (`max_position`),
-    //    kx = kz + 1 and ky = kz + 2 (mod 3); swap kx and ky if D[kz] < 0.
-    // 2. The shear: Sx = D[kx]/D[kz], Sy = D[ky]/D[kz], Sz = 1/D[kz].
-    // 3. For each vertex, P = V − P₀; sheared (x, y) =
-    //    (P[kx] − Sx·P[kz], P[ky] − Sy·P[kz]) and z = Sz·P[kz].
-    // 4. Hand the three sheared corners to `sheared_hit`, and fill
-    //    that in below.
-    let _ = (v, ray, interval, sheared_hit);
-    todo!("ch08 exercise 2: watertight")
+    // Steps 1 and 2: the ray's axes and shear.
+    let shear = Shear::of(ray.direction);
+    // Step 3: each vertex sheared.
+    let sheared = v.map(|vertex| shear.vertex(ray.origin, vertex));
+    // Steps 4–7.
+    sheared_hit(sheared, interval)
 }
 // ANCHOR_END: watertight
+
+// ANCHOR: shear
+impl Shear {
+    /// Steps 1 and 2 of [`watertight`] for the direction `d`, once per
+    /// ray.
+    pub fn of(d: DVec3) -> Shear {
+        // TODO:
+        // 1. kz = the axis of D's largest |component| (`max_position`),
+        //    kx = kz + 1 and ky = kz + 2 (mod 3); swap kx and ky if
+        //    D[kz] < 0 (so the triangle keeps its winding).
+        // 2. The shear: Sx = D[kx]/D[kz], Sy = D[ky]/D[kz], Sz = 1/D[kz].
+        //    Return `Shear { axes: [kx, ky, kz], shear: (Sx, Sy, Sz) }`.
+        let _ = d;
+        todo!("ch08 exercise 2: watertight")
+    }
+
+    /// Step 3: `vertex` relative to the ray's `origin`, sheared: (x, y)
+    /// in the plane across the ray, and z, its distance along the ray.
+    #[inline]
+    pub fn vertex(&self, origin: DVec3, vertex: DVec3) -> (DVec2, f64) {
+        // TODO:
+        // 3. P = vertex − origin; sheared (x, y) =
+        //    (P[kx] − Sx·P[kz], P[ky] − Sy·P[kz]) and z = Sz·P[kz].
+        let _ = (origin, vertex);
+        todo!("ch08 exercise 2: watertight")
+    }
+}
+// ANCHOR_END: shear
 
 // ANCHOR: sheared_hit
 /// Steps 4–7 of [`watertight`]: the hit `t`, if the origin of the xy plane

@@ -26,6 +26,7 @@ mod chapter_shapes;
 mod cylinder;
 mod ellipsoid;
 mod moller_trumbore;
+mod shear;
 mod sphere_roots;
 mod triangle;
 
@@ -40,6 +41,7 @@ pub use axis_box::AxisBox;
 pub use cylinder::Cylinder;
 pub use ellipsoid::Ellipsoid;
 pub use moller_trumbore::moller_trumbore;
+pub use shear::Shear;
 pub use slab::slab_test;
 pub use triangle::{Triangle, TriangleTest};
 pub use watertight::watertight;

@@ -1,11 +1,11 @@
 //! The fast walk through a [`MeshBvh`]: everything that depends on the
 //! ray alone (the reciprocal direction, the watertight test's shear) is
 //! computed once per ray, not once per box or per triangle.
-use raystep_core::{DVec2, DVec3, Interval};
+use raystep_core::{DVec3, Interval};
 
 use crate::mesh_bvh::{Node32, Node64, Nodes, outward};
 use crate::watertight::sheared_hit;
-use crate::{MeshBvh, Ray32};
+use crate::{MeshBvh, Ray32, Shear};
 
 /// What one walk did: the work a ray costs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -44,8 +44,7 @@ const GAMMA3_F64: f64 = 3.0 * (f64::EPSILON / 2.0) / (1.0 - 1.5 * f64::EPSILON);
 pub struct PreparedRay {
     /// The origin, and the watertight test's axes and shear.
     origin: DVec3,
-    axes: [usize; 3],
-    shear: DVec3,
+    shear: Shear,
     /// The slab test's origin and reciprocal direction, in both
     /// precisions, and per axis whether the ray goes toward −axis (then
     /// it enters the slab through its max plane).
@@ -60,17 +59,11 @@ impl PreparedRay {
     /// The ray's reciprocal direction and shear.
     pub fn new(ray: &Ray32) -> PreparedRay {
         let d = ray.direction.as_dvec3();
-        // The watertight test's steps 1 and 2 (see `watertight`).
-        let kz = d.abs().max_position();
-        let (mut kx, mut ky) = ((kz + 1) % 3, (kz + 2) % 3);
-        if d[kz] < 0.0 {
-            std::mem::swap(&mut kx, &mut ky);
-        }
         let inverse32 = ray.direction.to_array().map(|x| 1.0 / x);
         PreparedRay {
             origin: ray.origin.as_dvec3(),
-            axes: [kx, ky, kz],
-            shear: DVec3::new(d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]),
+            // The watertight test's steps 1 and 2 (exercise 2).
+            shear: Shear::of(d),
             origin32: ray.origin.to_array(),
             inverse32,
             origin64: ray.origin.as_dvec3().to_array(),
@@ -85,13 +78,8 @@ impl PreparedRay {
     /// order.
     #[inline]
     pub fn triangle(&self, v: &[DVec3; 3], interval: Interval) -> Option<f64> {
-        let [kx, ky, kz] = self.axes;
-        let s = self.shear;
-        let sheared = v.map(|vertex| {
-            let p = vertex - self.origin;
-            let xy = DVec2::new(p[kx] - s.x * p[kz], p[ky] - s.y * p[kz]);
-            (xy, s.z * p[kz])
-        });
+        // Step 3 (exercise 2), then steps 4–7.
+        let sheared = v.map(|vertex| self.shear.vertex(self.origin, vertex));
         sheared_hit(sheared, interval)
     }
 }

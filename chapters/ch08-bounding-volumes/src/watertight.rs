@@ -2,6 +2,8 @@
 use ch02::owns_boundary;
 use raystep_core::{DVec2, DVec3, Interval, Ray};
 
+use crate::Shear;
+
 // ANCHOR: watertight
 /// The `t` at which `ray` hits the triangle `v` within `interval`, by the
 /// watertight test of Woop, Benthin & Wald (JCGT 2(1), 2013).
@@ -20,26 +22,47 @@ pub fn watertight(
     ray: &Ray,
     interval: Interval,
 ) -> Option<f64> {
-    // Step 1: kz, the axis the ray goes along most, and kx, ky after it,
-    // swapped when it goes toward −kz so the triangle keeps its winding.
-    let d = ray.direction;
-    let kz = d.abs().max_position();
-    let (mut kx, mut ky) = ((kz + 1) % 3, (kz + 2) % 3);
-    if d[kz] < 0.0 {
-        std::mem::swap(&mut kx, &mut ky);
-    }
-    // Step 2: the shear that takes the direction to (0, 0, 1).
-    let shear = DVec3::new(d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]);
-    // Step 3: each vertex relative to the origin, sheared: (x, y) in the
-    // plane across the ray, and z, its distance along the ray.
-    let sheared = v.map(|vertex| {
-        let p = vertex - ray.origin;
-        let xy = DVec2::new(p[kx] - shear.x * p[kz], p[ky] - shear.y * p[kz]);
-        (xy, shear.z * p[kz])
-    });
+    // Steps 1 and 2: the ray's axes and shear.
+    let shear = Shear::of(ray.direction);
+    // Step 3: each vertex sheared.
+    let sheared = v.map(|vertex| shear.vertex(ray.origin, vertex));
+    // Steps 4–7.
     sheared_hit(sheared, interval)
 }
 // ANCHOR_END: watertight
+
+// ANCHOR: shear
+impl Shear {
+    /// Steps 1 and 2 of [`watertight`] for the direction `d`, once per
+    /// ray.
+    pub fn of(d: DVec3) -> Shear {
+        // Step 1: kz, the axis the ray goes along most, and kx, ky after
+        // it, swapped when it goes toward −kz so the triangle keeps its
+        // winding.
+        let kz = d.abs().max_position();
+        let (mut kx, mut ky) = ((kz + 1) % 3, (kz + 2) % 3);
+        if d[kz] < 0.0 {
+            std::mem::swap(&mut kx, &mut ky);
+        }
+        // Step 2: the shear that takes the direction to (0, 0, 1).
+        let shear = DVec3::new(d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]);
+        Shear {
+            axes: [kx, ky, kz],
+            shear,
+        }
+    }
+
+    /// Step 3: `vertex` relative to the ray's `origin`, sheared: (x, y)
+    /// in the plane across the ray, and z, its distance along the ray.
+    #[inline]
+    pub fn vertex(&self, origin: DVec3, vertex: DVec3) -> (DVec2, f64) {
+        let ([kx, ky, kz], s) = (self.axes, self.shear);
+        let p = vertex - origin;
+        let xy = DVec2::new(p[kx] - s.x * p[kz], p[ky] - s.y * p[kz]);
+        (xy, s.z * p[kz])
+    }
+}
+// ANCHOR_END: shear
 
 // ANCHOR: sheared_hit
 /// Steps 4–7 of [`watertight`]: the hit `t`, if the origin of the xy plane

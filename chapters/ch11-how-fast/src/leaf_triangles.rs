@@ -6,7 +6,7 @@
 //! (exactly) and runs chapter 8's watertight test — its common case
 //! inlined here, every other case handed to chapter 8's own code: the
 //! same answer, bit for bit.
-use ch08::{MeshHit, PreparedRay, TraceCounts};
+use ch08::{MeshHit, PreparedRay, Shear, TraceCounts};
 use raystep_core::{DVec2, DVec3, Interval};
 
 use crate::ray::FastRay;
@@ -162,13 +162,12 @@ pub fn watertight(
     interval: Interval,
 ) -> Option<f64> {
     // Step 1: the corners sheared (chapter 8's steps 1–3).
-    let [kx, ky, kz] = ray.axes;
-    let s = ray.shear;
-    let [(a, za), (b, zb), (c, zc)] = v.map(|vertex| {
-        let p = vertex - ray.origin64;
-        let xy = DVec2::new(p[kx] - s.x * p[kz], p[ky] - s.y * p[kz]);
-        (xy, s.z * p[kz])
-    });
+    let shear = Shear {
+        axes: ray.axes,
+        shear: ray.shear,
+    };
+    let [(a, za), (b, zb), (c, zc)] =
+        v.map(|vertex| shear.vertex(ray.origin64, vertex));
     // Step 2: the fast edge functions, and whether each sign is sure.
     let edge = |p: DVec2, q: DVec2| {
         let (left, right) = (p.x * q.y, p.y * q.x);

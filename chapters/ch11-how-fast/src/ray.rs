@@ -1,7 +1,7 @@
 //! Step 2's ray: everything a walk needs from the ray alone, computed
 //! once per ray — the box test's origin, reciprocal direction and which
 //! planes it enters through, and the watertight test's shear.
-use ch08::{PreparedRay, Ray32, outward};
+use ch08::{PreparedRay, Ray32, Shear, outward};
 use raystep_core::{DVec3, Interval};
 
 /// γ₃ for `f32`: a slab's exit widened by 1 + 2γ₃ never loses a box the
@@ -44,20 +44,15 @@ impl FastRay {
             return None;
         }
         let inverse = ray.direction.to_array().map(|x| 1.0 / x);
-        // The watertight test's steps 1 and 2, as chapter 8 does them.
-        let d = ray.direction.as_dvec3();
-        let kz = d.abs().max_position();
-        let (mut kx, mut ky) = ((kz + 1) % 3, (kz + 2) % 3);
-        if d[kz] < 0.0 {
-            std::mem::swap(&mut kx, &mut ky);
-        }
+        // The watertight test's steps 1 and 2: chapter 8's own.
+        let shear = Shear::of(ray.direction.as_dvec3());
         Some(FastRay {
             origin: ray.origin.to_array(),
             inverse,
             negative: inverse.map(|x| usize::from(x.is_sign_negative())),
             origin64: ray.origin.as_dvec3(),
-            axes: [kx, ky, kz],
-            shear: DVec3::new(d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]),
+            axes: shear.axes,
+            shear: shear.shear,
             ray: *ray,
             exact: lecture.then(|| PreparedRay::new(ray)),
         })
