@@ -9,10 +9,66 @@ use std::sync::{Arc, Mutex};
 
 use ch03::{BruteForce, Sphere};
 use ch08::{
-    Aabb, Accelerator, Bvh, BvhNode, DVec3, Hit, Interval, Object, Ray, Shape,
-    near_first_closest_hit,
+    Aabb, Accelerator, Bvh, BvhNode, DVec3, Hit, Interval, Object, Ray,
+    SahCosts, Shape, near_first_closest_hit, slab_test, split_cost,
 };
 use common::Rng;
+
+/// The walk tests its boxes with exercise 1 (`slab_test`), and the trees
+/// built here choose their leaves with exercise 5 (`split_cost`): each is
+/// asked first, so that a fault there is said as one and not blamed on
+/// the walk (a stub still counts as not attempted).
+fn exercises_it_stands_on() {
+    let ask = |what: &str, f: &dyn Fn() -> Result<(), String>| {
+        match std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)) {
+            Ok(Ok(())) => {}
+            Ok(Err(why)) => panic!("fails because {what} fails: {why}"),
+            Err(payload) => {
+                let message = payload
+                    .downcast_ref::<&str>()
+                    .map(|s| s.to_string())
+                    .or_else(|| payload.downcast_ref::<String>().cloned())
+                    .unwrap_or_default();
+                if message.contains("not yet implemented") {
+                    panic!(
+                        "not yet implemented: near_first's tests wait for \
+                         {what} (the walk stands on it)"
+                    );
+                }
+                panic!("fails because {what} panics: {message}");
+            }
+        }
+    };
+    ask("exercise 1 (slab_test)", &|| {
+        let unit = Aabb::new(DVec3::ZERO, DVec3::ONE);
+        let ray = Ray::new(DVec3::new(-1.0, 0.5, 0.5), DVec3::X);
+        match slab_test(&unit, &ray, Interval::FORWARD) {
+            Some(i) if i.min == 1.0 && (2.0..=2.0 + 1e-12).contains(&i.max) => {
+                Ok(())
+            }
+            other => Err(format!(
+                "the unit box, a ray from (-1, 0.5, 0.5) along +x: expected \
+                 inside from t = 1 to t = 2, got {other:?}"
+            )),
+        }
+    });
+    ask("exercise 5 (split_cost)", &|| {
+        let parent = Aabb::new(DVec3::ZERO, DVec3::new(2.0, 1.0, 1.0));
+        let (l, r) = (
+            Aabb::new(DVec3::ZERO, DVec3::ONE),
+            Aabb::new(DVec3::X, DVec3::new(2.0, 1.0, 1.0)),
+        );
+        let got = split_cost(&parent, &l, 1, &r, 1, &SahCosts::CHOSEN);
+        if (got - 2.2).abs() <= 1e-12 {
+            Ok(())
+        } else {
+            Err(format!(
+                "a 2 × 1 × 1 box cut into two unit cubes of one object each: \
+                 expected 2.2, got {got}"
+            ))
+        }
+    });
+}
 
 /// A sphere that writes its index into a shared log each time a ray is
 /// tested against it.
@@ -88,6 +144,7 @@ fn leaf_holding(bvh: &Bvh, index: usize) -> Vec<usize> {
 
 #[test]
 fn along_a_row_only_the_boxes_before_the_first_hit_are_opened() {
+    exercises_it_stands_on();
     let (objects, log) = row(64);
     let bvh = Bvh::for_objects(&objects, ch08::Builder::Median);
     // Along +x from x = −10 the first sphere is hit at t = 9; along −x
@@ -180,6 +237,7 @@ fn hand_built_tree() -> (Vec<Object>, Arc<Mutex<Vec<usize>>>, Bvh) {
 /// misses every sphere but crosses every box tests them all.
 #[test]
 fn a_hand_built_tree_opens_exactly_the_first_leaf() {
+    exercises_it_stands_on();
     let (objects, log, bvh) = hand_built_tree();
     let cases = [
         (
@@ -232,6 +290,7 @@ fn a_hand_built_tree_opens_exactly_the_first_leaf() {
 
 #[test]
 fn the_interval_bounds_the_answer() {
+    exercises_it_stands_on();
     let (objects, _log) = row(8);
     let bvh = Bvh::for_objects(&objects, ch08::Builder::Median);
     let ray = Ray::new(DVec3::new(-10.0, 0.0, 0.0), DVec3::X);
@@ -270,6 +329,7 @@ fn the_interval_bounds_the_answer() {
 
 #[test]
 fn no_tree_and_objects_outside_it() {
+    exercises_it_stands_on();
     let ray = Ray::new(DVec3::new(0.0, 5.0, 0.0), -DVec3::Y);
     // Nothing at all.
     let none = Bvh::for_objects(&[], ch08::Builder::Median);
@@ -308,6 +368,7 @@ fn no_tree_and_objects_outside_it() {
 
 #[test]
 fn seeded_rays_find_what_brute_force_finds() {
+    exercises_it_stands_on();
     let mut rng = Rng(8);
     let objects: Vec<Object> = (0..300)
         .map(|_| {
