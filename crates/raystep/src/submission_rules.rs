@@ -414,7 +414,7 @@ pub fn rotate90(v: DVec2) -> DVec2 {
     let path = Path::new(1e-3, 0..3, 2.5e+10f64, b'x', '\'');
     let (fs, env, os) = (path.f(), 1.0, [0u8]);
     let _: &'static str = s;
-    DVec2::new(-v.y, v.x)
+    DVec2::new(v.x, -v.y)
 }
 #[allow(clippy::needless_range_loop)]
 mod inline { pub fn f() {} }

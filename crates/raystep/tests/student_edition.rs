@@ -296,7 +296,135 @@ fn no_reference_body_is_in_the_export() {
 /// Lines of a reference solution that may stand elsewhere in the student
 /// edition: idioms any code of the lecture writes, and steps another
 /// chapter teaches again on its own, each with its reason.
-const COMMON_LINES: &[(&str, &str)] = &[];
+const COMMON_LINES: &[(&str, &str)] = &[
+    // Idioms: any closest-hit loop, any ray or quadric, any struct literal.
+    (
+        "let mut closest = None;",
+        "every closest-hit loop starts so",
+    ),
+    (
+        "let mut interval = interval;",
+        "every closest-hit loop shrinks it",
+    ),
+    (
+        "closest = Some((index, hit));",
+        "every closest-hit loop keeps it",
+    ),
+    (
+        "let mut test = |index: u32, interval: &mut Interval| {",
+        "the grid's and the kd-tree's leaf loops test a candidate so",
+    ),
+    ("test(index, &mut interval);", "the same leaf loops"),
+    ("let d = ray.direction;", "a name for the direction"),
+    (
+        "let d = ray.direction[axis];",
+        "a name for one of its components",
+    ),
+    ("let point = ray.at(t);", "every shape's hit point"),
+    ("if discriminant < 0.0 {", "every quadratic's miss"),
+    ("interval.contains(t).then_some(t)", "every hit ends so"),
+    (
+        "let normal = hit.facing(ray.direction);",
+        "chapter 3's API, called",
+    ),
+    (
+        "let reflected = Ray::new(",
+        "every reflected ray is a new ray",
+    ),
+    (
+        "offset_scale_aware(hit.point, normal),",
+        "chapter 4's offset, called by every secondary ray",
+    ),
+    ("center: DVec3::ZERO,", "a struct literal"),
+    ("return BoundingSphere {", "a struct literal"),
+    ("BoundingSphere { center, radius }", "a struct literal"),
+    (
+        "near_until: t_plane,",
+        "a field of chapter 10's Step a test expects",
+    ),
+    // Steps another part of the lecture teaches again, on its own terms.
+    (
+        "let q = b + b.signum() * discriminant.sqrt();",
+        "chapter 8's root solver for every quadric teaches the stable \
+         quadratic again, after chapter 3's sphere",
+    ),
+    (
+        "let cos_phi = (1.0 - sin2_phi).sqrt();",
+        "the exact Fresnel split of chapter 6 needs cos φ itself",
+    ),
+    (
+        "if sin2_phi >= 1.0 {",
+        "the same: total internal reflection",
+    ),
+    (
+        "let cos_theta = cos_theta.clamp(0.0, 1.0);",
+        "the same: its cos θ clamped",
+    ),
+    (
+        "let r0 = ((n_theta - n_phi) / (n_theta + n_phi)).powi(2);",
+        "the stability catalogue's textbook Schlick, which it compares \
+         chapter 6's with",
+    ),
+    (
+        "if normal.dot(light.position - hit.point) <= 0.0 {",
+        "chapter 5's tracer asks whether a shadow ray is shot at all, to \
+         count and draw it",
+    ),
+    (
+        "let approach = plane.normal.dot(ray.direction);",
+        "chapter 2's figure labels N·D, one call of chapter 1's API",
+    ),
+    (
+        "let distance = plane.eval(ray.origin);",
+        "the same figure labels N·P₀ + d",
+    ),
+    (
+        "let [a, b, c] = *corners;",
+        "chapter 7's figure names the corners",
+    ),
+    (
+        "[(a, b), (b, c), (c, a)]",
+        "chapter 7's figure draws the edges in both windings",
+    ),
+    ("[(a, c), (c, b), (b, a)]", "the same figure"),
+    (
+        "let (mut t0, mut t1) = (interval.min, interval.max);",
+        "tests/slab.rs keeps the naive slab test the catalogue shows \
+         failing (min/max ordering, no widened exit)",
+    ),
+    (
+        "let inverse = 1.0 / ray.direction[axis];",
+        "the same naive test, and the box primitive's normal",
+    ),
+    (
+        "let kz = d.abs().max_position();",
+        "tests/watertight.rs nudges a ray along the axes step 1 names (the \
+         stub's TODO spells the step out)",
+    ),
+    (
+        "let (left, right) = (p.x * q.y, p.y * q.x);",
+        "the appendix's f32 leaves inline the fast edge function to decide \
+         the signs they are sure of; the rest go to chapter 8's test whole",
+    ),
+    ("let fast = left - right;", "the same"),
+    (
+        "let det = e[0] + e[1] + e[2];",
+        "the appendix's AVX2 triangle test sums the same edge functions",
+    ),
+    (
+        "let (mut below, mut above) = (*node, *node);",
+        "chapter 10's event sweep cuts a node in two as the exercise does",
+    ),
+    // Follow-up (issue 30: one walk per structure): the mesh hierarchy's
+    // walk takes the nearer child first as exercise 6 does.
+    (
+        "while let Some((k, entry)) = stack.pop() {",
+        "the mesh hierarchy's own walk (issue 30 joins the two walks)",
+    ),
+    ("(Some(ta), Some(tb)) if tb < ta => {", "the same walk"),
+    ("(Some(ta), None) => stack.push((a, ta)),", "the same walk"),
+    ("(None, Some(tb)) => stack.push((b, tb)),", "the same walk"),
+];
 
 /// A later chapter's `exercise` feature turns on the earlier chapter's, so
 /// chapter 2's tests run on the student's chapter 1.
