@@ -13,24 +13,25 @@ pub fn setup_fault(
     got: Option<&Dda>,
 ) -> Option<String> {
     // Step 1: the box clips the ray.
-    let (inside, got) = match (ch08::slab_test(&lattice.bounds, ray, interval), got) {
-        (None, None) => return None,
-        (None, Some(_)) => {
-            return Some(
-                "expected None (the ray misses the grid's box within its \
+    let (inside, got) =
+        match (ch08::slab_test(&lattice.bounds, ray, interval), got) {
+            (None, None) => return None,
+            (None, Some(_)) => {
+                return Some(
+                    "expected None (the ray misses the grid's box within its \
                  interval), got a setup"
-                    .to_string(),
-            );
-        }
-        (Some(inside), None) => {
-            return Some(format!(
-                "expected a setup (the ray is inside the grid's box for t \
+                        .to_string(),
+                );
+            }
+            (Some(inside), None) => {
+                return Some(format!(
+                    "expected a setup (the ray is inside the grid's box for t \
                  in [{}, {}]), got None",
-                inside.min, inside.max
-            ));
-        }
-        (Some(inside), Some(got)) => (inside, got),
-    };
+                    inside.min, inside.max
+                ));
+            }
+            (Some(inside), Some(got)) => (inside, got),
+        };
     if (got.t_enter, got.t_exit) != (inside.min, inside.max) {
         return Some(format!(
             "(t_enter, t_exit) expected ({}, {}) (where the ray is inside the \
