@@ -235,10 +235,13 @@ mod tests {
         write(root, "b", "fn b() { 42 }\n");
         let chapter = chapter();
         let error = committed(root, &[&chapter]).unwrap_err().to_string();
+        let stub_word = "stub (no todo!() in it)";
         assert_eq!(
             error,
-            "chapters/ch01-a/exercise/b.rs: not in a git commit, and not a \
-             stub (no todo!() in it): restore the stub before exporting"
+            format!(
+                "chapters/ch01-a/exercise/b.rs: not in a git commit, and not \
+                 a {stub_word}: restore the stub before exporting"
+            )
         );
         write(root, "b", "fn b() { todo!() }\n");
         let stubs = committed(root, &[&chapter]).unwrap();
