@@ -272,13 +272,16 @@ pub(crate) fn cargo_program() -> String {
 
 /// Whose artifacts a build may share in its target folder.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Artifacts {
+pub(crate) enum Artifacts<'a> {
     /// A workspace of its own: see [`separate_artifacts`].
     Workspace,
-    /// A copy of the workspace in which only `package` differs (see
-    /// `crate::compile_isolation`): every other crate shares the
-    /// workspace's artifacts, `package` gets its own.
-    OwnPackage,
+    /// A copy of the workspace at this root in which only `package`
+    /// differs (see `crate::compile_isolation`): every other crate shares
+    /// the artifacts the original's own build makes (its
+    /// [`separate_artifacts`] settings, if any), and `package` gets a
+    /// setting of its own, so that neither build ever takes the other's
+    /// `package` for fresh.
+    OwnPackage(&'a Path),
 }
 
 /// `cargo test --no-run -p <package> [--features exercise]` in the workspace
@@ -288,7 +291,7 @@ pub(crate) fn build(
     root: &Path,
     package: &str,
     options: &Run,
-    artifacts: Artifacts,
+    artifacts: Artifacts<'_>,
 ) -> Result<Result<Built, BuildFailure>, Error> {
     let mut command = Command::new(cargo);
     command.current_dir(root).args([
@@ -321,10 +324,20 @@ pub(crate) fn build(
     match artifacts {
         Artifacts::Workspace => command
             .args(separate_artifacts(root, options.target_dir.as_deref())),
-        Artifacts::OwnPackage => command.args([
-            "--config".to_string(),
-            format!("profile.dev.package.\"{package}\".codegen-units=256"),
-        ]),
+        Artifacts::OwnPackage(original) => {
+            let own = format!("profile.dev.package.\"{package}\".");
+            let shared =
+                separate_artifacts(original, options.target_dir.as_deref());
+            for pair in shared.chunks(2) {
+                if !pair.iter().any(|arg| arg.starts_with(&own)) {
+                    command.args(pair);
+                }
+            }
+            command.args([
+                "--config".to_string(),
+                format!("{own}codegen-units=255"),
+            ])
+        }
     };
     let spawn_error = |source| Error::Spawn {
         program: cargo.to_string(),

@@ -6,9 +6,11 @@
 //! real (with the exercises that do not compile as their committed stubs)
 //! and every other file of the workspace is a symbolic link to the
 //! original. That copy builds into the same target folder: every other
-//! crate's artifacts are the workspace's own, and the chapter's are its own
-//! (a setting of their own, as [`crate::check::separate_artifacts`]
-//! explains), so only the chapter is compiled again.
+//! crate's artifacts are the ones the workspace's own build makes (with
+//! its settings, where it builds into a target folder not its own), and
+//! the chapter's are apart (a setting of their own, as
+//! [`crate::check::separate_artifacts`] explains), so only the chapter is
+//! compiled again, and neither build takes the other's chapter for fresh.
 
 use std::path::{Path, PathBuf};
 
@@ -132,7 +134,7 @@ pub fn check_others(
             &copy,
             chapter.package,
             &isolated,
-            Artifacts::OwnPackage,
+            Artifacts::OwnPackage(root),
         )? {
             Ok(built) => {
                 let mut report = check::run_built(&copy, chapter, run, built);
