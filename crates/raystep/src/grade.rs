@@ -2,12 +2,17 @@
 //! files checked in turn, as `raystep check` would, into one table.
 //!
 //! The instructor's workspace is never changed: it is copied once into a
-//! scratch folder (sources only), and before each student the chapter's
-//! `exercise/` and `tests/snapshots/` there are restored from the
-//! instructor's copy; then the student's files go in. Every student shares
-//! one target folder, so only the chapter crate is rebuilt. A submission
-//! that is missing a file, does not compile or loops gets its verdict; it
-//! never stops the others.
+//! scratch folder (sources only), where the graded chapter's exercise
+//! modules in `src/` are its committed stubs (no reference body of the
+//! chapter is in the copy). Before each student the chapter's `exercise/`
+//! (the committed stubs) and `tests/snapshots/` are put back; then the
+//! student's files go in, unless one names another file, the environment
+//! or the operating system (`refused`, see `crate::submission_rules`).
+//! Every student shares one target folder, so only the chapter crate is
+//! rebuilt. A pass of the tests stands only if the chapter's held-out
+//! cases, judged by the reference in a process of its own, agree too (see
+//! `crate::held_out`). A submission that is missing a file, does not
+//! compile or loops gets its verdict; it never stops the others.
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
