@@ -6,7 +6,7 @@ use std::collections::HashMap;
 
 use raystep_core::{Aabb, DVec3, Interval};
 
-use crate::{MeshBvh, Ray32, TraceCounts};
+use crate::{MeshAccelerator, MeshBvh, Ray32, TraceCounts};
 
 /// The t interval of an edge ray: its target is (to rounding) on the
 /// surface at t = 1; the slack allows for rounding the ray to `f32`.

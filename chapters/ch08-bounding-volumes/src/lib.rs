@@ -107,8 +107,10 @@ mod bvh_stats;
 mod bvh_sweep;
 mod bvh_traverse;
 mod edge_rays;
+mod mesh_brute_force;
 mod mesh_bvh;
 mod mesh_trace;
+mod prepared_ray;
 
 // Exercise 5: the SAH cost of one split.
 #[cfg_attr(feature = "exercise", path = "../exercise/sah_split.rs")]
@@ -126,10 +128,14 @@ pub use bvh_stats::TreeStats;
 pub use edge_rays::{
     EDGE_REACH, LeakSurface, leak_surfaces, leaks, shared_edge_rays,
 };
-pub use mesh_bvh::{MeshBvh, NodePrecision, Ray32, outward, triangle_boxes};
-pub use mesh_trace::{MeshHit, PreparedRay, TraceCounts};
+pub use mesh_brute_force::MeshBruteForce;
+pub use mesh_bvh::{MeshBvh, NodePrecision, outward, triangle_boxes};
 pub use near_first::near_first_closest_hit;
-pub use raystep_world::{Accelerator, Object, World};
+pub use prepared_ray::{Closest, PreparedRay};
+pub use raystep_core::Ray32;
+pub use raystep_world::{
+    Accelerator, MeshAccelerator, MeshHit, Object, TraceCounts, World,
+};
 pub use sah_split::split_cost;
 
 // ---------------------------------------------------------------------

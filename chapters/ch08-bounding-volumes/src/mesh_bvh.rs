@@ -1,43 +1,9 @@
 //! The hierarchy made for one thing only: many triangles, and rays given
 //! in single precision, as a benchmark (or a production tracer) has them.
 //! The same tree as [`Bvh`], copied into a layout the walk reads fast.
-use raystep_core::glam::Vec3;
-use raystep_core::{Aabb, DVec3, Ray};
+use raystep_core::{Aabb, DVec3};
 
 use crate::Bvh;
-
-/// A ray in single precision, the form of the benchmark's ray files: six
-/// `f32`s. Widened to a [`Ray`] exactly (every `f32` is an `f64`).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Ray32 {
-    /// Where it starts.
-    pub origin: Vec3,
-    /// Where it goes (any length, not zero).
-    pub direction: Vec3,
-}
-
-impl Ray32 {
-    /// `ray` rounded to single precision.
-    pub fn rounded(ray: &Ray) -> Ray32 {
-        Ray32 {
-            origin: ray.origin.as_vec3(),
-            direction: ray.direction.as_vec3(),
-        }
-    }
-
-    /// The same ray in double precision, exactly.
-    pub fn to_ray(self) -> Ray {
-        Ray::new(self.origin.as_dvec3(), self.direction.as_dvec3())
-    }
-
-    /// Are all six numbers finite, and the direction not zero? Other rays
-    /// are answered "no hit" without being traced.
-    pub fn is_valid(&self) -> bool {
-        self.origin.is_finite()
-            && self.direction.is_finite()
-            && self.direction != Vec3::ZERO
-    }
-}
 
 /// How the boxes of a [`MeshBvh`] are stored, and tested.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

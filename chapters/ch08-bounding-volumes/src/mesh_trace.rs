@@ -1,88 +1,15 @@
-//! The fast walk through a [`MeshBvh`]: everything that depends on the
-//! ray alone (the reciprocal direction, the watertight test's shear) is
-//! computed once per ray, not once per box or per triangle.
-use raystep_core::{DVec3, Interval};
+//! The fast walk through a [`MeshBvh`], asked through the mesh seam
+//! ([`MeshAccelerator`]): the ray prepared once ([`PreparedRay`]), the
+//! boxes tested in the precision they are stored in.
+use raystep_core::{Interval, Ray32};
+use raystep_world::{MeshAccelerator, MeshHit, TraceCounts};
 
 use crate::mesh_bvh::{Node32, Node64, Nodes, outward};
-use crate::watertight::sheared_hit;
-use crate::{MeshBvh, Ray32, Shear};
-
-/// What one walk did: the work a ray costs.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct TraceCounts {
-    /// Nodes taken from the stack and looked at (interior or leaf).
-    pub nodes: u64,
-    /// Ray–triangle tests.
-    pub triangles: u64,
-}
-
-impl TraceCounts {
-    /// Both counts added.
-    pub fn add(&mut self, other: TraceCounts) {
-        self.nodes += other.nodes;
-        self.triangles += other.triangles;
-    }
-}
-
-/// A hit of the mesh: which triangle (the mesh's index) and where.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct MeshHit {
-    /// The triangle's index in the mesh.
-    pub triangle: u32,
-    /// The ray's parameter at the hit.
-    pub t: f64,
-}
+use crate::{Closest, MeshBruteForce, MeshBvh, PreparedRay};
 
 /// γ₃ for `f32` and for `f64`: the widening of a slab's exit (part 1).
 const GAMMA3_F32: f32 = 3.0 * (f32::EPSILON / 2.0) / (1.0 - 1.5 * f32::EPSILON);
 const GAMMA3_F64: f64 = 3.0 * (f64::EPSILON / 2.0) / (1.0 - 1.5 * f64::EPSILON);
-
-/// Step 1 of every walk: the ray's part of every test, once.
-///
-/// Public so that other hierarchies (the benchmark's peers) can be handed
-/// the very same triangle test: [`PreparedRay::triangle`].
-pub struct PreparedRay {
-    /// The origin, and the watertight test's axes and shear.
-    origin: DVec3,
-    shear: Shear,
-    /// The slab test's origin and reciprocal direction, in both
-    /// precisions, and per axis whether the ray goes toward −axis (then
-    /// it enters the slab through its max plane).
-    origin32: [f32; 3],
-    inverse32: [f32; 3],
-    origin64: [f64; 3],
-    inverse64: [f64; 3],
-    negative: [usize; 3],
-}
-
-impl PreparedRay {
-    /// The ray's reciprocal direction and shear.
-    pub fn new(ray: &Ray32) -> PreparedRay {
-        let d = ray.direction.as_dvec3();
-        let inverse32 = ray.direction.to_array().map(|x| 1.0 / x);
-        PreparedRay {
-            origin: ray.origin.as_dvec3(),
-            // The watertight test's steps 1 and 2 (exercise 2).
-            shear: Shear::of(d),
-            origin32: ray.origin.to_array(),
-            inverse32,
-            origin64: ray.origin.as_dvec3().to_array(),
-            inverse64: d.to_array().map(|x| 1.0 / x),
-            negative: inverse32.map(|x| usize::from(x.is_sign_negative())),
-        }
-    }
-
-    /// The watertight test's step 3 and the rest: the hit `t` of the
-    /// triangle `v` within `interval`. The same numbers as
-    /// [`watertight`](crate::watertight) gives, computed in the same
-    /// order.
-    #[inline]
-    pub fn triangle(&self, v: &[DVec3; 3], interval: Interval) -> Option<f64> {
-        // Step 3 (exercise 2), then steps 4–7.
-        let sheared = v.map(|vertex| self.shear.vertex(self.origin, vertex));
-        sheared_hit(sheared, interval)
-    }
-}
 
 /// A node's box test and link, in whatever precision it is stored.
 trait SlabNode {
@@ -213,20 +140,14 @@ impl SlabNode for Plain<'_> {
     }
 }
 
-impl MeshBvh {
-    /// The closest hit of `ray` within `interval`, and what it cost
-    /// (added to `counts`). A ray with a NaN, an infinity or a zero
-    /// direction is answered None without being traced.
-    pub fn closest_hit(
+impl MeshAccelerator for MeshBvh {
+    fn closest_hit(
         &self,
         ray: &Ray32,
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
-        if !ray.is_valid() {
-            return None;
-        }
-        let ray = PreparedRay::new(ray);
+        let ray = PreparedRay::traced(ray)?;
         match &self.nodes {
             Nodes::Double(n) => self.closest(n, |n| n, &ray, interval, counts),
             Nodes::Single(n) => self.closest(n, Robust, &ray, interval, counts),
@@ -236,17 +157,15 @@ impl MeshBvh {
         }
     }
 
-    /// Does anything meet `ray` within `interval`? (A shadow ray.)
-    pub fn any_hit(
+    fn any_hit(
         &self,
         ray: &Ray32,
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> bool {
-        if !ray.is_valid() {
+        let Some(ray) = PreparedRay::traced(ray) else {
             return false;
-        }
-        let ray = PreparedRay::new(ray);
+        };
         match &self.nodes {
             Nodes::Double(n) => self.any(n, |n| n, &ray, interval, counts),
             Nodes::Single(n) => self.any(n, Robust, &ray, interval, counts),
@@ -255,7 +174,9 @@ impl MeshBvh {
             }
         }
     }
+}
 
+impl MeshBvh {
     /// Brute force with the same triangle test: every triangle, in the
     /// mesh's order, the closest kept. What the walk must agree with.
     pub fn brute_force(
@@ -263,22 +184,8 @@ impl MeshBvh {
         ray: &Ray32,
         interval: Interval,
     ) -> Option<MeshHit> {
-        if !ray.is_valid() {
-            return None;
-        }
-        let ray = PreparedRay::new(ray);
-        let mut interval = interval;
-        let mut closest = None;
-        for (k, v) in self.all.iter().enumerate() {
-            if let Some(t) = ray.triangle(v, interval) {
-                interval = interval.with_max(t);
-                closest = Some(MeshHit {
-                    triangle: k as u32,
-                    t,
-                });
-            }
-        }
-        closest
+        let mut uncounted = TraceCounts::default();
+        MeshBruteForce(&self.all).closest_hit(ray, interval, &mut uncounted)
     }
 
     // ANCHOR: fast_closest
@@ -292,19 +199,14 @@ impl MeshBvh {
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
-        let mut interval = interval;
-        let mut closest = None;
+        let mut closest = Closest::new(interval);
         // Step 1: triangles outside the tree (none in a finite mesh).
         for &id in &self.unbounded {
-            counts.triangles += 1;
-            if let Some(t) = ray.triangle(&self.all[id as usize], interval) {
-                interval = interval.with_max(t);
-                closest = Some(MeshHit { triangle: id, t });
-            }
+            closest.test(ray, id, &self.all[id as usize], counts);
         }
         // Step 2: a stack of (node, entry t); the depth bounds its size.
         let mut stack = Stack::new(self.depth + 1, (0, 0.0));
-        let mut span = V::span(interval);
+        let mut span = V::span(closest.interval);
         if let Some(root) = nodes.first()
             && let Some(t) = view(root).enter(ray, span)
         {
@@ -313,7 +215,7 @@ impl MeshBvh {
         while let Some((k, entry)) = stack.pop() {
             // Step 3: a box entered beyond the closest hit holds nothing
             // closer (the comparison as loose as the box test's).
-            if entry > V::reach(interval.max) {
+            if entry > V::reach(closest.interval.max) {
                 continue;
             }
             counts.nodes += 1;
@@ -322,14 +224,9 @@ impl MeshBvh {
                 // Step 4: a leaf: its triangles lie side by side.
                 let range = first as usize..(first + count) as usize;
                 for k in range {
-                    counts.triangles += 1;
-                    if let Some(t) = ray.triangle(&self.corners[k], interval) {
-                        interval = interval.with_max(t);
-                        span = V::span(interval);
-                        closest = Some(MeshHit {
-                            triangle: self.ids[k],
-                            t,
-                        });
+                    let (id, v) = (self.ids[k], &self.corners[k]);
+                    if closest.test(ray, id, v, counts) {
+                        span = V::span(closest.interval);
                     }
                 }
                 continue;
@@ -353,7 +250,7 @@ impl MeshBvh {
                 (None, None) => {}
             }
         }
-        closest
+        closest.hit
     }
     // ANCHOR_END: fast_closest
 
@@ -367,8 +264,7 @@ impl MeshBvh {
         counts: &mut TraceCounts,
     ) -> bool {
         for &id in &self.unbounded {
-            counts.triangles += 1;
-            if ray.triangle(&self.all[id as usize], interval).is_some() {
+            if ray.blocked_by(&self.all[id as usize], interval, counts) {
                 return true;
             }
         }
@@ -390,8 +286,7 @@ impl MeshBvh {
                 continue;
             }
             for k in first as usize..(first + count) as usize {
-                counts.triangles += 1;
-                if ray.triangle(&self.corners[k], interval).is_some() {
+                if ray.blocked_by(&self.corners[k], interval, counts) {
                     return true; // one blocker is enough
                 }
             }

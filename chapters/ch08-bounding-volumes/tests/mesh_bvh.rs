@@ -7,9 +7,10 @@
 use std::path::Path;
 
 use ch08::{
-    Aabb, Builder, Bvh, BvhNode, DVec3, EDGE_REACH, Interval, MeshBvh, MeshHit,
-    NodePrecision, Ray32, TraceCounts, camera_rays, incoherent_rays,
-    leak_surfaces, shared_edge_rays, triangle_boxes, watertight,
+    Aabb, Builder, Bvh, BvhNode, DVec3, EDGE_REACH, Interval, MeshAccelerator,
+    MeshBvh, MeshHit, NodePrecision, Ray32, TraceCounts, camera_rays,
+    incoherent_rays, leak_surfaces, shared_edge_rays, triangle_boxes,
+    watertight,
 };
 use raystep_core::glam::Vec3;
 use raystep_scene::Mesh;

@@ -3,7 +3,9 @@
 //! very same numbers as every other method of `raystep bench`).
 use std::ops::ControlFlow;
 
-use ch08::{MeshHit, PreparedRay, Ray32, TraceCounts};
+use ch08::{
+    Closest, MeshAccelerator, MeshHit, PreparedRay, Ray32, TraceCounts,
+};
 use raystep_core::{DVec3, Interval};
 
 use crate::{Fill, Grid, Mailbox, Resolution, hit_in_cell, walk};
@@ -35,17 +37,6 @@ impl MeshGrid {
         self.grid.stats().bytes + self.triangles.len() * size_of::<[DVec3; 3]>()
     }
 
-    /// The closest hit within `interval`; `counts` gets the cells visited
-    /// (as `nodes`) and the triangle tests.
-    pub fn closest_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> Option<MeshHit> {
-        self.closest_recorded(ray, interval, counts, |_| {})
-    }
-
     /// [`MeshGrid::closest_hit`], telling `tested` each triangle it
     /// tests, in order (to count the tests of a triangle already tested).
     /// Generic, so that the benchmark's no-op recorder costs nothing.
@@ -56,61 +47,61 @@ impl MeshGrid {
         counts: &mut TraceCounts,
         mut tested: impl FnMut(u32),
     ) -> Option<MeshHit> {
-        if !ray.is_valid() {
-            return None;
-        }
-        let prepared = PreparedRay::new(ray);
-        let mut interval = interval;
-        let mut closest = None;
-        let mut test = |k: u32, interval: &mut Interval| {
-            counts.triangles += 1;
+        let prepared = PreparedRay::traced(ray)?;
+        let mut closest = Closest::new(interval);
+        let mut test = |k: u32, closest: &mut Closest| {
             tested(k);
-            if let Some(t) =
-                prepared.triangle(&self.triangles[k as usize], *interval)
-            {
-                *interval = interval.with_max(t);
-                closest = Some(MeshHit { triangle: k, t });
-            }
+            closest.test(&prepared, k, &self.triangles[k as usize], counts);
         };
         for &k in &self.grid.unbounded {
-            test(k, &mut interval);
+            test(k, &mut closest);
         }
         let mut mailbox = Mailbox::new();
         let mut cells = 0;
-        walk(&self.grid.lattice, &ray.to_ray(), interval, |cell| {
+        let start = closest.interval;
+        walk(&self.grid.lattice, &ray.to_ray(), start, |cell| {
             cells += 1;
             for &k in self.grid.cell_objects(cell.index) {
                 if self.grid.mailboxing && mailbox.seen(k) {
                     continue;
                 }
-                test(k, &mut interval);
+                test(k, &mut closest);
             }
-            if hit_in_cell(interval.max, cell.t_out) {
+            if hit_in_cell(closest.interval.max, cell.t_out) {
                 ControlFlow::Break(())
             } else {
                 ControlFlow::Continue(())
             }
         });
         counts.nodes += cells;
-        closest
+        closest.hit
+    }
+}
+
+impl MeshAccelerator for MeshGrid {
+    /// The closest hit; `counts` gets the cells visited (as `nodes`) and
+    /// the triangle tests.
+    fn closest_hit(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> Option<MeshHit> {
+        self.closest_recorded(ray, interval, counts, |_| {})
     }
 
-    /// Is anything hit within `interval`? Stops at the first hit.
-    pub fn any_hit(
+    fn any_hit(
         &self,
         ray: &Ray32,
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> bool {
-        if !ray.is_valid() {
+        let Some(prepared) = PreparedRay::traced(ray) else {
             return false;
-        }
-        let prepared = PreparedRay::new(ray);
+        };
         let mut test = |k: u32| {
-            counts.triangles += 1;
-            prepared
-                .triangle(&self.triangles[k as usize], interval)
-                .is_some()
+            let v = &self.triangles[k as usize];
+            prepared.blocked_by(v, interval, counts)
         };
         if self.grid.unbounded.iter().any(|&k| test(k)) {
             return true;

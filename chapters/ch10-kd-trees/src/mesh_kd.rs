@@ -1,7 +1,9 @@
 //! A kd-tree made for one thing only: many triangles, and the benchmark's
 //! single-precision rays, tested with chapter 8's watertight test (the
 //! very same numbers as every other method of `raystep bench`).
-use ch08::{MeshHit, PreparedRay, Ray32, TraceCounts};
+use ch08::{
+    Closest, MeshAccelerator, MeshHit, PreparedRay, Ray32, TraceCounts,
+};
 use ch09::Mailbox;
 use raystep_core::{DVec3, Interval};
 
@@ -34,67 +36,51 @@ impl MeshKd {
     pub fn bytes(&self) -> usize {
         self.tree.bytes() + self.triangles.len() * size_of::<[DVec3; 3]>()
     }
+}
 
-    /// The closest hit within `interval`; `counts` gets the nodes
-    /// reached and the triangle tests.
-    pub fn closest_hit(
+impl MeshAccelerator for MeshKd {
+    /// The closest hit; `counts` gets the nodes reached and the triangle
+    /// tests.
+    fn closest_hit(
         &self,
         ray: &Ray32,
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
-        if !ray.is_valid() {
-            return None;
-        }
-        let prepared = PreparedRay::new(ray);
-        let mut interval = interval;
-        let mut closest = None;
-        let mut test =
-            |k: u32, interval: &mut Interval, counts: &mut TraceCounts| {
-                counts.triangles += 1;
-                if let Some(t) =
-                    prepared.triangle(&self.triangles[k as usize], *interval)
-                {
-                    *interval = interval.with_max(t);
-                    closest = Some(MeshHit { triangle: k, t });
-                }
-            };
+        let prepared = PreparedRay::traced(ray)?;
+        let mut closest = Closest::new(interval);
         for &k in &self.tree.unbounded {
-            test(k, &mut interval, counts);
+            closest.test(&prepared, k, &self.triangles[k as usize], counts);
         }
         let mut mailbox = Mailbox::new();
-        kd_walk(&self.tree, &ray.to_ray(), interval, |visit| {
+        let start = closest.interval;
+        kd_walk(&self.tree, &ray.to_ray(), start, |visit| {
             counts.nodes += 1;
-            let Some(list) = visit.objects else {
-                return interval.max;
-            };
-            for &k in list {
+            for &k in visit.objects.unwrap_or_default() {
                 if self.tree.mailboxing && mailbox.seen(k) {
                     continue;
                 }
-                test(k, &mut interval, counts);
+                let v = &self.triangles[k as usize];
+                closest.test(&prepared, k, v, counts);
             }
-            interval.max
+            closest.interval.max
         });
-        closest
+        closest.hit
     }
 
     /// Is anything hit within `interval`? Stops at the first hit.
-    pub fn any_hit(
+    fn any_hit(
         &self,
         ray: &Ray32,
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> bool {
-        if !ray.is_valid() {
+        let Some(prepared) = PreparedRay::traced(ray) else {
             return false;
-        }
-        let prepared = PreparedRay::new(ray);
+        };
         let test = |k: u32, counts: &mut TraceCounts| {
-            counts.triangles += 1;
-            prepared
-                .triangle(&self.triangles[k as usize], interval)
-                .is_some()
+            let v = &self.triangles[k as usize];
+            prepared.blocked_by(v, interval, counts)
         };
         if self.tree.unbounded.iter().any(|&k| test(k, counts)) {
             return true;

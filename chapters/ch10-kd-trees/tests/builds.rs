@@ -4,7 +4,8 @@
 mod common;
 
 use ch08::{
-    BoundingSphere, Builder, MeshBvh, NodePrecision, Ray32, TraceCounts,
+    BoundingSphere, Builder, MeshAccelerator, MeshBvh, NodePrecision, Ray32,
+    TraceCounts,
 };
 use ch10::{
     Aabb, Clip, DVec3, Interval, KdBuilder, KdCosts, KdNode, KdTree, MeshKd,

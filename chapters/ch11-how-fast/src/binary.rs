@@ -7,7 +7,7 @@
 //! split is taken first: the sign of the direction along the split axis
 //! says which, with no comparison of `t`s. The far child waits on an
 //! explicit stack; nothing recurses.
-use ch08::{Bvh, MeshHit, Ray32, TraceCounts, outward};
+use ch08::{Bvh, MeshAccelerator, MeshHit, Ray32, TraceCounts, outward};
 use raystep_core::{Aabb, DVec3, Interval};
 use smallvec::SmallVec;
 
@@ -41,6 +41,31 @@ pub struct Binary {
     ids: Vec<u32>,
     /// Triangles with no finite box, tested by every ray first.
     outside: Outside,
+}
+
+impl MeshAccelerator for Binary {
+    /// The closest hit within `interval`, counted.
+    fn closest_hit(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> Option<MeshHit> {
+        let ray = FastRay::new(ray, self.triangles.lecture())?;
+        self.walk(&ray, interval, false, counts)
+    }
+
+    /// Does anything meet the ray within `interval`?
+    fn any_hit(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> bool {
+        FastRay::new(ray, self.triangles.lecture()).is_some_and(|ray| {
+            self.walk(&ray, interval, true, counts).is_some()
+        })
+    }
 }
 
 impl Binary {
@@ -85,29 +110,6 @@ impl Binary {
             + self.triangles.bytes()
             + self.ids.len() * size_of::<u32>()
             + self.outside.bytes()
-    }
-
-    /// The closest hit within `interval`, counted.
-    pub fn closest_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> Option<MeshHit> {
-        let ray = FastRay::new(ray, self.triangles.lecture())?;
-        self.walk(&ray, interval, false, counts)
-    }
-
-    /// Does anything meet the ray within `interval`?
-    pub fn any_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> bool {
-        FastRay::new(ray, self.triangles.lecture()).is_some_and(|ray| {
-            self.walk(&ray, interval, true, counts).is_some()
-        })
     }
 
     // ANCHOR: walk

@@ -1,6 +1,8 @@
 //! The steps of the appendix, each one row of its table: what is built,
 //! and one type that builds and traces any of them.
-use ch08::{Builder, Bvh, MeshHit, Ray32, TraceCounts, triangle_boxes};
+use ch08::{
+    Builder, Bvh, MeshAccelerator, MeshHit, Ray32, TraceCounts, triangle_boxes,
+};
 use raystep_core::{DVec3, Interval};
 
 use crate::binary::Binary;
@@ -271,10 +273,12 @@ impl FastBvh {
             Built::Compressed8(w, _) => w.bytes(),
         }
     }
+}
 
+impl MeshAccelerator for FastBvh {
     /// The closest hit within `interval`, counted (`nodes`: nodes
     /// reached; a wide node counts once for its `W` boxes).
-    pub fn closest_hit(
+    fn closest_hit(
         &self,
         ray: &Ray32,
         interval: Interval,
@@ -321,7 +325,7 @@ impl FastBvh {
     }
 
     /// Does anything meet the ray within `interval`?
-    pub fn any_hit(
+    fn any_hit(
         &self,
         ray: &Ray32,
         interval: Interval,

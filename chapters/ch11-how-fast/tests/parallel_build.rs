@@ -8,8 +8,9 @@ mod common;
 use common::{agree, bunny};
 
 use ch08::{
-    BoundingSphere, Builder, Bvh, Interval, MAX_LEAF, MeshBvh, NodePrecision,
-    Ray32, TraceCounts, camera_rays, incoherent_rays, triangle_boxes,
+    BoundingSphere, Builder, Bvh, Interval, MAX_LEAF, MeshAccelerator, MeshBvh,
+    NodePrecision, Ray32, TraceCounts, camera_rays, incoherent_rays,
+    triangle_boxes,
 };
 use ch11::parallel_build::{build_parallel, build_parallel_with};
 use ch11::{FastBvh, Step};

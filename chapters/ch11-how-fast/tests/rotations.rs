@@ -7,8 +7,9 @@ mod common;
 use common::{agree, bunny};
 
 use ch08::{
-    BoundingSphere, Builder, Bvh, Interval, MeshBvh, MeshHit, NodePrecision,
-    Ray32, TraceCounts, camera_rays, incoherent_rays, triangle_boxes,
+    BoundingSphere, Builder, Bvh, Interval, MeshAccelerator, MeshBvh, MeshHit,
+    NodePrecision, Ray32, TraceCounts, camera_rays, incoherent_rays,
+    triangle_boxes,
 };
 use ch11::rotations::{Rotations, rotate};
 use ch11::{FastBvh, Step};

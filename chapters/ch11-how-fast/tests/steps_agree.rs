@@ -8,9 +8,9 @@ mod common;
 use common::{agree, bunny};
 
 use ch08::{
-    BoundingSphere, Builder, Bvh, EDGE_REACH, Interval, MeshBvh, MeshHit,
-    NodePrecision, Ray32, TraceCounts, camera_rays, incoherent_rays,
-    leak_surfaces, shared_edge_rays, triangle_boxes,
+    BoundingSphere, Builder, Bvh, EDGE_REACH, Interval, MeshAccelerator,
+    MeshBvh, MeshHit, NodePrecision, Ray32, TraceCounts, camera_rays,
+    incoherent_rays, leak_surfaces, shared_edge_rays, triangle_boxes,
 };
 use ch11::{FastBvh, Step};
 use raystep_core::glam::Vec3;

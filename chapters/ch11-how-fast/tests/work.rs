@@ -12,8 +12,9 @@ use common::bunny;
 use std::fmt::Write;
 
 use ch08::{
-    BoundingSphere, Builder, Bvh, Interval, MeshBvh, NodePrecision, Ray32,
-    TraceCounts, camera_rays, incoherent_rays, triangle_boxes,
+    BoundingSphere, Builder, Bvh, Interval, MeshAccelerator, MeshBvh,
+    NodePrecision, Ray32, TraceCounts, camera_rays, incoherent_rays,
+    triangle_boxes,
 };
 use ch11::{FastBvh, Step};
 use raystep_core::Aabb;

@@ -15,12 +15,12 @@ use std::ffi::{CStr, c_char, c_void};
 use std::sync::OnceLock;
 use std::time::Instant;
 
-use ch08::{Ray32, TraceCounts};
 use libloading::Library;
 use raystep_core::glam::Vec3;
-use raystep_core::{DVec3, Interval};
+use raystep_core::{DVec3, Interval, Ray32};
+use raystep_world::{MeshAccelerator, MeshHit, TraceCounts};
 
-use crate::methods::{Built, Tracer};
+use crate::built::Built;
 
 /// The names the library is looked for by: the runtime package's first
 /// (the unversioned link comes only with the development package).
@@ -480,13 +480,13 @@ impl Drop for Scene {
 }
 
 /// Embree counts nothing: the counts are left as they are.
-impl Tracer for Scene {
-    fn closest(
+impl MeshAccelerator for Scene {
+    fn closest_hit(
         &self,
         ray: &Ray32,
         interval: Interval,
         _counts: &mut TraceCounts,
-    ) -> Option<(u32, f32)> {
+    ) -> Option<MeshHit> {
         if !ray.is_valid() {
             return None;
         }
@@ -508,11 +508,13 @@ impl Tracer for Scene {
             (self.device.api.intersect1)(self.raw, &mut context, &mut query)
         };
         // a hit sets the geometry, and tfar to its t
-        (query.hit.geom_id != RTC_INVALID_GEOMETRY_ID)
-            .then_some((query.hit.prim_id, query.ray.tfar))
+        (query.hit.geom_id != RTC_INVALID_GEOMETRY_ID).then_some(MeshHit {
+            triangle: query.hit.prim_id,
+            t: f64::from(query.ray.tfar),
+        })
     }
 
-    fn any(
+    fn any_hit(
         &self,
         ray: &Ray32,
         interval: Interval,
@@ -555,11 +557,11 @@ fn self_test(api: &'static Api) -> Result<u32, String> {
     let (all, short) = (Interval::FORWARD, Interval::new(0.0, 1.5));
     let counts = &mut TraceCounts::default();
     let right = matches!(
-        scene.closest(&onto, all, counts),
-        Some((0, t)) if (t - 2.0).abs() < 1e-6
-    ) && scene.closest(&beside, all, counts).is_none()
-        && scene.any(&onto, all, counts)
-        && !scene.any(&onto, short, counts);
+        scene.closest_hit(&onto, all, counts),
+        Some(MeshHit { triangle: 0, t }) if (t - 2.0).abs() < 1e-6
+    ) && scene.closest_hit(&beside, all, counts).is_none()
+        && scene.any_hit(&onto, all, counts)
+        && !scene.any_hit(&onto, short, counts);
     if right {
         Ok(version)
     } else {
@@ -594,8 +596,8 @@ fn fail<T>(why: String) -> T {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::methods::BruteForce;
     use crate::run::OWN_TEST_TOLERANCE;
+    use ch08::MeshBruteForce;
 
     #[test]
     fn a_missing_library_is_named_with_its_package() {
@@ -641,7 +643,7 @@ mod tests {
             }
         }
         let built = build(&triangles, true);
-        let brute = BruteForce(&triangles);
+        let brute = MeshBruteForce(&triangles);
         let counts = &mut TraceCounts::default();
         let mut hits = 0;
         for k in 0..1000 {
@@ -653,12 +655,17 @@ mod tests {
             };
             for interval in [Interval::FORWARD, Interval::new(0.0, 0.9)] {
                 let (ours, theirs) = (
-                    brute.closest(&ray, interval, counts),
-                    built.tracer.closest(&ray, interval, counts),
+                    brute
+                        .closest_hit(&ray, interval, counts)
+                        .map(|h| h.t as f32),
+                    built
+                        .tracer
+                        .closest_hit(&ray, interval, counts)
+                        .map(|h| h.t as f32),
                 );
                 match (ours, theirs) {
                     (None, None) => {}
-                    (Some((_, a)), Some((_, b))) => {
+                    (Some(a), Some(b)) => {
                         hits += 1;
                         let tolerance = OWN_TEST_TOLERANCE * a.max(b);
                         assert!((a - b).abs() <= tolerance, "ray {k}");
@@ -666,8 +673,8 @@ mod tests {
                     _ => panic!("ray {k}: {ours:?} against {theirs:?}"),
                 }
                 assert_eq!(
-                    brute.any(&ray, interval, counts),
-                    built.tracer.any(&ray, interval, counts),
+                    brute.any_hit(&ray, interval, counts),
+                    built.tracer.any_hit(&ray, interval, counts),
                     "ray {k}"
                 );
             }

@@ -10,6 +10,7 @@
 //! too, its library loaded at run time (reported skipped where missing).
 #![deny(missing_docs)]
 
+mod built;
 #[cfg(feature = "embree")]
 mod embree;
 mod error;
@@ -27,12 +28,14 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use raystep_core::{Aabb, DVec3};
 use raystep_scene::Mesh;
 
+pub use built::Built;
 pub use error::BenchError;
-pub use methods::{BruteForce, Built, GridSpec, KdSpec, Method, Tracer};
+pub use methods::{GridSpec, KdSpec, Method};
 pub use rays::{
     Question, RAY_BYTES, RaySet, incoherent, primary, ray_bytes, read_rays,
     shadow,
 };
+pub use report::agreement_name;
 pub use report::{BenchReport, MethodReport, SetInfo, SetReport};
 pub use run::{
     Answer, MISS, OWN_TEST_TOLERANCE, agree, agree_within, compare, median,

@@ -1,36 +1,17 @@
 //! What a benchmark compares: our hierarchy (a builder and a node
-//! precision), our grid (chapter 9), our kd-tree (chapter 10) and, with
-//! the `peers` feature, other libraries' hierarchies (with `embree`,
-//! Intel's Embree too) — each built on the same triangles and asked
-//! through one trait.
+//! precision), our grid (chapter 9), our kd-tree (chapter 10), the steps
+//! of chapter 11 and, with the `peers` feature, other libraries'
+//! hierarchies (with `embree`, Intel's Embree too) — each built on the
+//! same triangles and asked through the mesh seam,
+//! [`MeshAccelerator`](raystep_world::MeshAccelerator).
 use std::time::Instant;
 
-use ch08::{
-    Builder, Bvh, MeshBvh, NodePrecision, PreparedRay, Ray32, TraceCounts,
-    TreeStats, triangle_boxes,
-};
+use ch08::{Builder, Bvh, MeshBvh, NodePrecision, triangle_boxes};
 use ch09::{Fill, MeshGrid, Resolution};
 use ch10::{Clip, KdBuilder, KdCosts, MeshKd};
-use raystep_core::{DVec3, Interval};
+use raystep_core::DVec3;
 
-/// A built structure's answers. Hits are `(triangle, t)`, with `t` in
-/// `f32` (what the peers report, and the hit file holds).
-pub trait Tracer: Sync {
-    /// The closest hit within `interval`.
-    fn closest(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> Option<(u32, f32)>;
-    /// Is anything hit within `interval`?
-    fn any(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> bool;
-}
+use crate::built::Built;
 
 /// One method of the comparison.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -108,18 +89,6 @@ impl KdSpec {
             mailbox: true,
         }
     }
-}
-
-/// What building gave: the tracer and what it is made of.
-pub struct Built {
-    /// Asks the structure.
-    pub tracer: Box<dyn Tracer>,
-    /// Milliseconds from the triangles' boxes to a tracer.
-    pub build_ms: f64,
-    /// Bytes of nodes and reordered triangles (`None`: not known).
-    pub bytes: Option<usize>,
-    /// Our trees only: the tree's shape ([`Bvh::stats`]).
-    pub tree: Option<TreeStats>,
 }
 
 impl Method {
@@ -236,7 +205,7 @@ impl Method {
                     build_ms,
                     bytes: Some(bvh.bytes()),
                     tree: Some(tree.stats()),
-                    tracer: Box::new(Ours(bvh)),
+                    tracer: Box::new(bvh),
                 }
             }
             Method::Grid(spec) => {
@@ -250,7 +219,7 @@ impl Method {
                     build_ms,
                     bytes: Some(grid.bytes()),
                     tree: None,
-                    tracer: Box::new(GridTracer(grid)),
+                    tracer: Box::new(grid),
                 }
             }
             Method::Kd(spec) => {
@@ -263,7 +232,7 @@ impl Method {
                     build_ms,
                     bytes: Some(kd.bytes()),
                     tree: None,
-                    tracer: Box::new(KdTracer(kd)),
+                    tracer: Box::new(kd),
                 }
             }
             Method::Fast(step) => {
@@ -274,7 +243,7 @@ impl Method {
                     build_ms,
                     bytes: Some(fast.bytes()),
                     tree: None,
-                    tracer: Box::new(FastTracer(fast)),
+                    tracer: Box::new(fast),
                 }
             }
             #[cfg(feature = "embree")]
@@ -282,171 +251,13 @@ impl Method {
                 crate::embree::build(triangles, robust)
             }
             #[cfg(feature = "peers")]
-            peer => crate::peers::build(peer, triangles),
-            #[cfg(not(feature = "peers"))]
-            _ => unreachable!("peers are built with the `peers` feature"),
+            Method::ObvhsBvh2 => crate::peers::obvhs_bvh2(triangles),
+            #[cfg(feature = "peers")]
+            Method::ObvhsCwBvh => crate::peers::obvhs_cwbvh(triangles),
+            #[cfg(feature = "peers")]
+            Method::BvhCrate => crate::peers::bvh_crate(triangles),
+            #[allow(unreachable_patterns)] // with `peers` and `embree` on
+            _ => unreachable!("a peer is built only with its feature"),
         }
-    }
-}
-
-struct Ours(MeshBvh);
-
-impl Tracer for Ours {
-    fn closest(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> Option<(u32, f32)> {
-        let hit = self.0.closest_hit(ray, interval, counts)?;
-        Some((hit.triangle, hit.t as f32))
-    }
-
-    fn any(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> bool {
-        self.0.any_hit(ray, interval, counts)
-    }
-}
-
-/// Chapter 9's grid: `nodes` in the counts are the cells visited.
-struct GridTracer(MeshGrid);
-
-impl Tracer for GridTracer {
-    fn closest(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> Option<(u32, f32)> {
-        let hit = self.0.closest_hit(ray, interval, counts)?;
-        Some((hit.triangle, hit.t as f32))
-    }
-
-    fn any(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> bool {
-        self.0.any_hit(ray, interval, counts)
-    }
-}
-
-/// Chapter 10's kd-tree: `nodes` in the counts are the nodes reached.
-struct KdTracer(MeshKd);
-
-impl Tracer for KdTracer {
-    fn closest(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> Option<(u32, f32)> {
-        let hit = self.0.closest_hit(ray, interval, counts)?;
-        Some((hit.triangle, hit.t as f32))
-    }
-
-    fn any(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> bool {
-        self.0.any_hit(ray, interval, counts)
-    }
-}
-
-/// A step of the appendix: `nodes` in the counts are the nodes reached
-/// (a wide node once for all its boxes).
-struct FastTracer(ch11::FastBvh);
-
-impl Tracer for FastTracer {
-    fn closest(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> Option<(u32, f32)> {
-        let hit = self.0.closest_hit(ray, interval, counts)?;
-        Some((hit.triangle, hit.t as f32))
-    }
-
-    fn any(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> bool {
-        self.0.any_hit(ray, interval, counts)
-    }
-}
-
-/// The closest hit among `candidates` (a triangle's index and corners),
-/// each tested with the chapter's watertight test, counted.
-pub(crate) fn closest_among<'a>(
-    ray: &PreparedRay,
-    candidates: impl Iterator<Item = (u32, &'a [DVec3; 3])>,
-    interval: Interval,
-    counts: &mut TraceCounts,
-) -> Option<(u32, f32)> {
-    let mut interval = interval;
-    let mut closest = None;
-    for (k, v) in candidates {
-        counts.triangles += 1;
-        if let Some(t) = ray.triangle(v, interval) {
-            interval = interval.with_max(t);
-            closest = Some((k, t as f32));
-        }
-    }
-    closest
-}
-
-/// Does any of `candidates` meet the ray? Stops at the first, counted.
-pub(crate) fn any_among<'a>(
-    ray: &PreparedRay,
-    mut candidates: impl Iterator<Item = &'a [DVec3; 3]>,
-    interval: Interval,
-    counts: &mut TraceCounts,
-) -> bool {
-    candidates.any(|v| {
-        counts.triangles += 1;
-        ray.triangle(v, interval).is_some()
-    })
-}
-
-/// Brute force with the chapter's watertight test: every triangle.
-pub struct BruteForce<'a>(pub &'a [[DVec3; 3]]);
-
-impl Tracer for BruteForce<'_> {
-    fn closest(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> Option<(u32, f32)> {
-        if !ray.is_valid() {
-            return None;
-        }
-        let all = self.0.iter().enumerate().map(|(k, v)| (k as u32, v));
-        closest_among(&PreparedRay::new(ray), all, interval, counts)
-    }
-
-    fn any(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> bool {
-        ray.is_valid()
-            && any_among(
-                &PreparedRay::new(ray),
-                self.0.iter(),
-                interval,
-                counts,
-            )
     }
 }

@@ -3,63 +3,77 @@
 //! and its walk differ. Their own box tests decide what they visit.
 use std::time::{Duration, Instant};
 
-use ch08::{PreparedRay, Ray32, TraceCounts};
-use raystep_core::{DVec3, Interval};
+use ch08::{Closest, PreparedRay};
+use raystep_core::{DVec3, Interval, Ray32};
+use raystep_world::{MeshAccelerator, MeshHit, TraceCounts};
 
-use crate::methods::{Built, Method, Tracer, any_among, closest_among};
+use crate::built::Built;
 
-/// Builds a peer over `triangles`, timed from our triangles to a tracer.
-pub fn build(method: Method, triangles: &[[DVec3; 3]]) -> Built {
+/// obvhs's `Bvh2` over `triangles` (its `medium_build` preset), timed
+/// from our triangles to a tracer.
+pub fn obvhs_bvh2(triangles: &[[DVec3; 3]]) -> Built {
+    timed(|| {
+        let (tris, params, mut core) = obvhs_input(triangles);
+        let bvh = obvhs::bvh2::builder::build_bvh2_from_tris(
+            &tris, params, &mut core,
+        );
+        Box::new(Obvhs2(bvh, triangles.to_vec()))
+    })
+}
+
+/// obvhs's compressed 8-wide `CwBvh` (the same preset), timed.
+pub fn obvhs_cwbvh(triangles: &[[DVec3; 3]]) -> Built {
+    timed(|| {
+        let (tris, params, mut core) = obvhs_input(triangles);
+        let bvh = obvhs::cwbvh::builder::build_cwbvh_from_tris(
+            &tris, params, &mut core,
+        );
+        Box::new(ObvhsCw(bvh, triangles.to_vec()))
+    })
+}
+
+/// The `bvh` crate's binned-SAH hierarchy, timed.
+pub fn bvh_crate(triangles: &[[DVec3; 3]]) -> Built {
+    timed(|| {
+        let mut shapes: Vec<Shape> = triangles
+            .iter()
+            .enumerate()
+            .map(|(k, v)| Shape::new(k as u32, v))
+            .collect();
+        let bvh = bvh::bvh::Bvh::build(&mut shapes);
+        Box::new(BvhCrate(bvh, shapes, triangles.to_vec()))
+    })
+}
+
+/// A peer built by `build`, its time from our triangles to a tracer.
+fn timed(build: impl FnOnce() -> Box<dyn MeshAccelerator>) -> Built {
     let start = Instant::now();
-    let tracer: Box<dyn Tracer> = match method {
-        Method::ObvhsBvh2 | Method::ObvhsCwBvh => {
-            let tris: Vec<obvhs::triangle::Triangle> = triangles
-                .iter()
-                .map(|v| obvhs::triangle::Triangle {
-                    v0: v[0].as_vec3a(),
-                    v1: v[1].as_vec3a(),
-                    v2: v[2].as_vec3a(),
-                })
-                .collect();
-            let params = obvhs::BvhBuildParams::medium_build();
-            let mut core = Duration::ZERO;
-            if method == Method::ObvhsBvh2 {
-                let bvh = obvhs::bvh2::builder::build_bvh2_from_tris(
-                    &tris, params, &mut core,
-                );
-                Box::new(Obvhs2(bvh, triangles.to_vec()))
-            } else {
-                let bvh = obvhs::cwbvh::builder::build_cwbvh_from_tris(
-                    &tris, params, &mut core,
-                );
-                Box::new(ObvhsCw(bvh, triangles.to_vec()))
-            }
-        }
-        Method::BvhCrate => {
-            let mut shapes: Vec<Shape> = triangles
-                .iter()
-                .enumerate()
-                .map(|(k, v)| Shape::new(k as u32, v))
-                .collect();
-            let bvh = bvh::bvh::Bvh::build(&mut shapes);
-            Box::new(BvhCrate(bvh, shapes, triangles.to_vec()))
-        }
-        Method::Ours(..)
-        | Method::Grid(..)
-        | Method::Kd(..)
-        | Method::Fast(..) => {
-            unreachable!("ours are built in methods.rs")
-        }
-        Method::Embree { .. } => {
-            unreachable!("Embree is built in embree.rs, with its feature")
-        }
-    };
+    let tracer = build();
     Built {
         tracer,
         build_ms: start.elapsed().as_secs_f64() * 1e3,
         bytes: None,
         tree: None,
     }
+}
+
+/// obvhs's triangles, its build preset, and its build-time counter.
+fn obvhs_input(
+    triangles: &[[DVec3; 3]],
+) -> (
+    Vec<obvhs::triangle::Triangle>,
+    obvhs::BvhBuildParams,
+    Duration,
+) {
+    let tris = triangles
+        .iter()
+        .map(|v| obvhs::triangle::Triangle {
+            v0: v[0].as_vec3a(),
+            v1: v[1].as_vec3a(),
+            v2: v[2].as_vec3a(),
+        })
+        .collect();
+    (tris, obvhs::BvhBuildParams::medium_build(), Duration::ZERO)
 }
 
 /// An obvhs ray over `interval` (infinite ends allowed).
@@ -91,17 +105,14 @@ struct ObvhsCw(obvhs::cwbvh::CwBvh, Vec<[DVec3; 3]>);
 /// obvhs's two hierarchies answer through the same calls.
 macro_rules! obvhs_tracer {
     ($type:ty) => {
-        impl Tracer for $type {
-            fn closest(
+        impl MeshAccelerator for $type {
+            fn closest_hit(
                 &self,
                 ray: &Ray32,
                 interval: Interval,
                 counts: &mut TraceCounts,
-            ) -> Option<(u32, f32)> {
-                if !ray.is_valid() {
-                    return None;
-                }
-                let prepared = PreparedRay::new(ray);
+            ) -> Option<MeshHit> {
+                let prepared = PreparedRay::traced(ray)?;
                 let indices = &self.0.primitive_indices;
                 let mut hit = obvhs::ray::RayHit::none();
                 let found = self.0.ray_traverse(
@@ -112,19 +123,21 @@ macro_rules! obvhs_tracer {
                         test(&prepared, v, interval, counts)
                     },
                 );
-                found.then(|| (indices[hit.primitive_id as usize], hit.t))
+                found.then(|| MeshHit {
+                    triangle: indices[hit.primitive_id as usize],
+                    t: f64::from(hit.t),
+                })
             }
 
-            fn any(
+            fn any_hit(
                 &self,
                 ray: &Ray32,
                 interval: Interval,
                 counts: &mut TraceCounts,
             ) -> bool {
-                if !ray.is_valid() {
+                let Some(prepared) = PreparedRay::traced(ray) else {
                     return false;
-                }
-                let prepared = PreparedRay::new(ray);
+                };
                 let indices = &self.0.primitive_indices;
                 !self.0.ray_traverse_miss(obvhs_ray(ray, interval), |_, id| {
                     let v = &self.1[indices[id] as usize];
@@ -197,36 +210,36 @@ fn bvh_ray(ray: &Ray32) -> bvh::ray::Ray<f32, 3> {
     )
 }
 
-impl Tracer for BvhCrate {
-    fn closest(
+impl MeshAccelerator for BvhCrate {
+    fn closest_hit(
         &self,
         ray: &Ray32,
         interval: Interval,
         counts: &mut TraceCounts,
-    ) -> Option<(u32, f32)> {
-        if !ray.is_valid() {
-            return None;
+    ) -> Option<MeshHit> {
+        let prepared = PreparedRay::traced(ray)?;
+        let mut closest = Closest::new(interval);
+        for shape in self.candidates(&bvh_ray(ray)) {
+            let v = &self.2[shape.index as usize];
+            closest.test(&prepared, shape.index, v, counts);
         }
-        let query = bvh_ray(ray);
-        let found = self
-            .candidates(&query)
-            .map(|shape| (shape.index, &self.2[shape.index as usize]));
-        closest_among(&PreparedRay::new(ray), found, interval, counts)
+        closest.hit
     }
 
-    fn any(
+    fn any_hit(
         &self,
         ray: &Ray32,
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> bool {
-        if !ray.is_valid() {
+        let Some(prepared) = PreparedRay::traced(ray) else {
             return false;
-        }
+        };
         let query = bvh_ray(ray);
-        let found = self
-            .candidates(&query)
-            .map(|shape| &self.2[shape.index as usize]);
-        any_among(&PreparedRay::new(ray), found, interval, counts)
+        let mut found = self.candidates(&query);
+        found.any(|shape| {
+            let v = &self.2[shape.index as usize];
+            prepared.blocked_by(v, interval, counts)
+        })
     }
 }

@@ -2,7 +2,7 @@
 //! incoherent; seeded) or read from a file of little-endian `f32`s.
 use std::path::Path;
 
-use ch08::{BoundingSphere, MeshBvh, Ray32, TraceCounts};
+use ch08::{BoundingSphere, MeshAccelerator, MeshBvh, Ray32, TraceCounts};
 use raystep_core::glam::Vec3;
 use raystep_core::{Aabb, DVec3, Interval};
 

@@ -172,8 +172,7 @@ impl BenchReport {
                 set.brute_force_disagreements
             );
         }
-        let exact =
-            |m: &MethodReport| m.agreement == crate::run::agreement_name(None);
+        let exact = |m: &MethodReport| m.agreement == agreement_name(None);
         let label = |m: &MethodReport| {
             let mark = if exact(m) { "" } else { " ≈" };
             format!("{}{mark}", m.method)
@@ -261,6 +260,14 @@ impl BenchReport {
     }
 }
 
+/// How a report names a tolerance: `exact`, or `t within 1e-4`.
+pub fn agreement_name(tolerance: Option<f32>) -> String {
+    match tolerance {
+        None => "exact".into(),
+        Some(tolerance) => format!("t within {tolerance:e}"),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -282,7 +289,7 @@ mod tests {
             },
             &sets,
         );
-        embree.agreement = crate::run::agreement_name(Some(1e-4));
+        embree.agreement = agreement_name(Some(1e-4));
         embree.finish(&sets);
         let report = BenchReport {
             mesh: "bunny.obj".into(),

@@ -3,14 +3,15 @@
 //! checked against the first method's, and a sample against brute force.
 use std::time::Instant;
 
-use ch08::{Ray32, TraceCounts};
+use ch08::MeshBruteForce;
 use indicatif::ProgressBar;
 use rayon::prelude::*;
-use raystep_core::DVec3;
+use raystep_core::{DVec3, Ray32};
+use raystep_world::{MeshAccelerator, TraceCounts};
 
-use crate::methods::{BruteForce, Method, Tracer};
+use crate::methods::Method;
 use crate::rays::{Question, RaySet, interval};
-use crate::report::{MethodReport, SetReport};
+use crate::report::{MethodReport, SetReport, agreement_name};
 
 /// One ray's answer, as the hit file stores it: `t` (+∞ for a miss) and
 /// the triangle (`u32::MAX` for a miss). Any-hit answers use `t` = 0 for
@@ -22,7 +23,10 @@ pub const MISS: Answer = (f32::INFINITY, u32::MAX);
 
 /// Traces `set` with `tracer` on the current thread pool, in chunks; the
 /// answers in the set's order, and the work counted.
-pub fn trace(tracer: &dyn Tracer, set: &RaySet) -> (Vec<Answer>, TraceCounts) {
+pub fn trace(
+    tracer: &dyn MeshAccelerator,
+    set: &RaySet,
+) -> (Vec<Answer>, TraceCounts) {
     let range = interval(set.question);
     let chunks: Vec<(Vec<Answer>, TraceCounts)> = set
         .rays
@@ -48,7 +52,7 @@ pub fn trace(tracer: &dyn Tracer, set: &RaySet) -> (Vec<Answer>, TraceCounts) {
 }
 
 fn answer(
-    tracer: &dyn Tracer,
+    tracer: &dyn MeshAccelerator,
     question: Question,
     ray: &Ray32,
     range: raystep_core::Interval,
@@ -56,10 +60,10 @@ fn answer(
 ) -> Answer {
     match question {
         Question::Closest => tracer
-            .closest(ray, range, counts)
-            .map_or(MISS, |(triangle, t)| (t, triangle)),
+            .closest_hit(ray, range, counts)
+            .map_or(MISS, |hit| (hit.t as f32, hit.triangle)),
         Question::Any => {
-            if tracer.any(ray, range, counts) {
+            if tracer.any_hit(ray, range, counts) {
                 (0.0, 0)
             } else {
                 MISS
@@ -192,26 +196,18 @@ pub fn compare(
     (reports, first)
 }
 
-/// How a report names a tolerance: `exact`, or `t within 1e-4`.
-pub fn agreement_name(tolerance: Option<f32>) -> String {
-    match tolerance {
-        None => "exact".into(),
-        Some(tolerance) => format!("t within {tolerance:e}"),
-    }
-}
-
 /// Checks `count` rays of each set (evenly spread; all if `count` is at
 /// least the set's size) against brute force: how many were checked, and
 /// how many of the reference answers differ (beyond `tolerance`, if any).
 pub fn check_brute_force(
     triangles: &[[DVec3; 3]],
     sets: &[RaySet],
-    reference: &dyn Tracer,
+    reference: &dyn MeshAccelerator,
     tolerance: Option<f32>,
     count: usize,
     progress: &ProgressBar,
 ) -> Vec<(usize, usize)> {
-    let brute = BruteForce(triangles);
+    let brute = MeshBruteForce(triangles);
     sets.iter()
         .map(|set| {
             // exactly min(count, len) rays, evenly spread: ray k·len/n

@@ -1,6 +1,7 @@
 //! The few types every chapter of the raystep lecture shares.
 //!
-//! * [`Ray`]: a half-line `P(t) = origin + t·direction`.
+//! * [`Ray`]: a half-line `P(t) = origin + t·direction`; [`Ray32`], the
+//!   same in single precision, as the mesh structures are asked.
 //! * [`Interval`]: the range of `t` a query accepts (`t_min..t_max`).
 //! * [`Hit`]: where a ray met a surface: `t`, the point and the unit normal.
 //! * [`Camera`]: a pinhole camera that makes one ray per pixel.
@@ -17,6 +18,7 @@ mod camera;
 mod hit;
 mod interval;
 mod ray;
+mod ray32;
 mod shape;
 
 pub use bounds::Aabb;
@@ -24,6 +26,7 @@ pub use camera::Camera;
 pub use hit::Hit;
 pub use interval::Interval;
 pub use ray::Ray;
+pub use ray32::Ray32;
 pub use shape::Shape;
 
 /// glam, re-exported so chapters use the same version of it.

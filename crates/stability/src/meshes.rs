@@ -11,9 +11,9 @@
 //! 3 674 for its leak surfaces and its quantized copy), so that brute
 //! force can answer 10⁶ rays per case.
 use ch08::{
-    BoundingSphere, Builder, Bvh, EDGE_REACH, MeshBvh, NodePrecision, Ray32,
-    SplitMix64, TraceCounts, camera_rays, incoherent_rays, leak_surfaces,
-    shared_edge_rays, triangle_boxes,
+    BoundingSphere, Builder, Bvh, EDGE_REACH, MeshAccelerator, MeshBruteForce,
+    MeshBvh, NodePrecision, Ray32, SplitMix64, TraceCounts, camera_rays,
+    incoherent_rays, leak_surfaces, shared_edge_rays, triangle_boxes,
 };
 use ch09::{Fill, MeshGrid, Resolution};
 use ch10::{Clip, KdBuilder, KdCosts, MeshKd};
@@ -159,42 +159,32 @@ struct Scene {
     interval: Interval,
 }
 
-/// The structures asked, each with its name.
-enum Structure {
-    Lecture(MeshBvh),
-    Fast(FastBvh),
-    Grid(MeshGrid),
-    Kd(MeshKd),
-}
+/// What a structure answers for a ray: the closest hit's `t` (its bits),
+/// anything hit in the interval, anything hit in its first half.
+type Answers = (Option<u64>, bool, bool);
 
-impl Structure {
-    /// The closest hit's `t` within `interval`.
-    fn closest(&self, ray: &Ray32, interval: Interval) -> Option<u64> {
-        let counts = &mut TraceCounts::default();
-        let hit = match self {
-            Structure::Lecture(s) => s.closest_hit(ray, interval, counts),
-            Structure::Fast(s) => s.closest_hit(ray, interval, counts),
-            Structure::Grid(s) => s.closest_hit(ray, interval, counts),
-            Structure::Kd(s) => s.closest_hit(ray, interval, counts),
-        };
-        hit.map(|h| h.t.to_bits())
-    }
-
-    /// Is anything hit within `interval`?
-    fn any(&self, ray: &Ray32, interval: Interval) -> bool {
-        let counts = &mut TraceCounts::default();
-        match self {
-            Structure::Lecture(s) => s.any_hit(ray, interval, counts),
-            Structure::Fast(s) => s.any_hit(ray, interval, counts),
-            Structure::Grid(s) => s.any_hit(ray, interval, counts),
-            Structure::Kd(s) => s.any_hit(ray, interval, counts),
-        }
-    }
+/// What `structure` answers for `ray` over `interval`, asked through the
+/// mesh seam (the counts are not kept).
+fn answers(
+    structure: &dyn MeshAccelerator,
+    ray: &Ray32,
+    interval: Interval,
+) -> Answers {
+    let counts = &mut TraceCounts::default();
+    (
+        structure
+            .closest_hit(ray, interval, counts)
+            .map(|h| h.t.to_bits()),
+        structure.any_hit(ray, interval, counts),
+        structure.any_hit(ray, half(interval), counts),
+    )
 }
 
 /// Every structure over `triangles`, named, with whether it may fail:
 /// only the `f32 nearest` nodes may (chapter 8 shows them for it).
-fn structures(triangles: &[[DVec3; 3]]) -> Vec<(String, Structure, Expect)> {
+fn structures(
+    triangles: &[[DVec3; 3]],
+) -> Vec<(String, Box<dyn MeshAccelerator>, Expect)> {
     // The four trees the steps start from, each built once.
     let boxes = triangle_boxes(triangles);
     let tree = Bvh::build(&boxes, Builder::BinnedSah { bins: 16 });
@@ -208,7 +198,7 @@ fn structures(triangles: &[[DVec3; 3]]) -> Vec<(String, Structure, Expect)> {
         step if step.builder() == Builder::SweepSah => &sweep,
         _ => &tree,
     };
-    let mut all = Vec::new();
+    let mut all: Vec<(String, Box<dyn MeshAccelerator>, Expect)> = Vec::new();
     for precision in NodePrecision::ALL {
         let expect = if precision == NodePrecision::SingleNearest {
             Expect::Shown
@@ -217,7 +207,7 @@ fn structures(triangles: &[[DVec3; 3]]) -> Vec<(String, Structure, Expect)> {
         };
         all.push((
             format!("mesh bvh: {}", precision.name()),
-            Structure::Lecture(MeshBvh::new(triangles, &tree, precision)),
+            Box::new(MeshBvh::new(triangles, &tree, precision)),
             expect,
         ));
     }
@@ -226,26 +216,26 @@ fn structures(triangles: &[[DVec3; 3]]) -> Vec<(String, Structure, Expect)> {
         if fast.kernel() != Kernel::Scalar {
             all.push((
                 format!("fast: {}, scalar", step.name()),
-                Structure::Fast(fast.clone().scalar()),
+                Box::new(fast.clone().scalar()),
                 Expect::Never,
             ));
         }
         all.push((
             format!("fast: {}", step.name()),
-            Structure::Fast(fast),
+            Box::new(fast),
             Expect::Never,
         ));
     }
     for fill in [Fill::Exact, Fill::Boxes] {
         all.push((
             format!("mesh grid: {}", fill.name()),
-            Structure::Grid(MeshGrid::new(triangles, Resolution::Rule, fill)),
+            Box::new(MeshGrid::new(triangles, Resolution::Rule, fill)),
             Expect::Never,
         ));
     }
     all.push((
         "mesh kd-tree".to_string(),
-        Structure::Kd(MeshKd::new(
+        Box::new(MeshKd::new(
             triangles,
             KdBuilder::SahEvents,
             KdCosts::CHOSEN,
@@ -255,10 +245,6 @@ fn structures(triangles: &[[DVec3; 3]]) -> Vec<(String, Structure, Expect)> {
     ));
     all
 }
-
-/// What a structure answers for a ray: the closest hit's `t` (its bits),
-/// anything hit in the interval, anything hit in its first half.
-type Answers = (Option<u64>, bool, bool);
 
 /// The interval's first half (up to 1 for an unbounded one).
 fn half(interval: Interval) -> Interval {
@@ -276,10 +262,7 @@ fn count(scenes: &[Scene]) -> Vec<(Count, Expect)> {
     use rayon::prelude::*;
     let mut counts: Vec<(Count, Expect)> = Vec::new();
     for scene in scenes {
-        let tree =
-            Bvh::build(&triangle_boxes(&scene.triangles), Builder::Median);
-        let brute =
-            MeshBvh::new(&scene.triangles, &tree, NodePrecision::Double);
+        let brute = MeshBruteForce(&scene.triangles);
         let structures = structures(&scene.triangles);
         let interval = scene.interval;
         let wrong = scene
@@ -291,18 +274,18 @@ fn count(scenes: &[Scene]) -> Vec<(Count, Expect)> {
                     // (one pass: the test's t does not depend on the
                     // interval, so something is hit in the first half
                     // exactly if the closest hit is there)
-                    let hit = brute.brute_force(ray, interval);
+                    let hit = brute.closest_hit(
+                        ray,
+                        interval,
+                        &mut TraceCounts::default(),
+                    );
                     let truth: Answers = (
                         hit.map(|h| h.t.to_bits()),
                         hit.is_some(),
                         hit.is_some_and(|h| h.t <= half(interval).max),
                     );
                     for (w, (_, s, _)) in wrong.iter_mut().zip(&structures) {
-                        let ours = (
-                            s.closest(ray, interval),
-                            s.any(ray, interval),
-                            s.any(ray, half(interval)),
-                        );
+                        let ours = answers(s.as_ref(), ray, interval);
                         *w += u64::from(ours != truth);
                     }
                 }

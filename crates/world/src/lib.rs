@@ -1,6 +1,7 @@
 //! The world a raystep tracer traces: its objects, their materials, the
 //! lights and the camera, and the [`Accelerator`] that searches the
-//! objects for a ray's hits.
+//! objects for a ray's hits; and its twin for triangle meshes, the
+//! [`MeshAccelerator`].
 //!
 //! A [`World`] is built from a scene file ([`raystep_scene::Scene`]) by a
 //! chapter: the chapter turns each shape of the file into a surface it has
@@ -11,6 +12,7 @@
 #![deny(missing_docs)]
 
 mod accelerator;
+mod mesh_accelerator;
 
 use std::sync::Arc;
 
@@ -19,6 +21,7 @@ use raystep_scene::{Light, Material, Scene, SceneError};
 use thiserror::Error;
 
 pub use accelerator::Accelerator;
+pub use mesh_accelerator::{MeshAccelerator, MeshHit, TraceCounts};
 
 /// A surface and the index of its material in [`World::materials`].
 #[derive(Clone, Debug)]

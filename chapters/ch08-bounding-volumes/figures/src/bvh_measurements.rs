@@ -8,11 +8,11 @@ use std::path::{Path, PathBuf};
 
 use ch07_figures::measurements::{ChartScene, chart_stages};
 use ch08::{
-    AGGLOMERATIVE_LIMIT, Aabb, Builder, Bvh, DVec3, NodePrecision,
-    leak_surfaces, leaks, shared_edge_rays,
+    AGGLOMERATIVE_LIMIT, Aabb, Builder, Bvh, DVec3, MeshBruteForce,
+    NodePrecision, leak_surfaces, leaks, shared_edge_rays,
 };
 use raystep_bench::{
-    BruteForce, Method, MethodReport, RaySet, compare, incoherent,
+    Method, MethodReport, RaySet, compare, incoherent,
     on_threads_with_steps, primary, trace,
 };
 use raystep_render::timing::Timing;
@@ -167,7 +167,7 @@ pub fn measure_scaling(
         };
         let built = Method::Ours(CHART_BUILDER, NodePrecision::Single)
             .build(&triangles);
-        let brute = BruteForce(&triangles);
+        let brute = MeshBruteForce(&triangles);
         let rows_here = on_threads_with_steps(
             1,
             |tick| {

@@ -13,7 +13,7 @@ use ch09::{
     uniform_triangles,
 };
 use raystep_bench::{
-    BruteForce, GridSpec, Method, MethodReport, RaySet, compare, incoherent,
+    GridSpec, Method, MethodReport, RaySet, compare, incoherent,
     on_threads, on_threads_with_steps, primary,
 };
 use raystep_core::{Camera, Ray};
@@ -276,7 +276,7 @@ pub fn measure_compare(
             })
             .collect();
         let brute = on_threads(1, || {
-            let tracer = BruteForce(&scene.triangles);
+            let tracer = ch08::MeshBruteForce(&scene.triangles);
             sample
                 .iter()
                 .map(|set| {
