@@ -15,6 +15,7 @@ mod hit_map;
 mod plane_hit;
 mod polygon;
 mod project;
+mod ray_plane_cases;
 mod rounding;
 
 // Exercise 1: where a ray meets a plane, and the cases where it does not.
@@ -29,9 +30,10 @@ pub use crossing::inside_crossing;
 pub use fill_rule::owns_boundary;
 pub use hit_map::{HitMap, closest_hit, demo_camera, demo_scene, hit_map};
 pub use inside_polygon::{edge_function, inside_convex};
-pub use plane_hit::{InfinitePlane, RayPlane, intersect_plane};
+pub use plane_hit::{InfinitePlane, intersect_plane};
 pub use polygon::{Polygon, PolygonError};
 pub use project::{dominant_axis, project};
 pub use ray_plane::ray_plane;
+pub use ray_plane_cases::RayPlane;
 pub use raystep_core::{Aabb, Camera, DVec2, DVec3, Hit, Interval, Ray, Shape};
 pub use rounding::zero_within_rounding;
