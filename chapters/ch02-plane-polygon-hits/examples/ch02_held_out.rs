@@ -86,6 +86,21 @@ fn near_an_end(t: f64, i: Interval) -> bool {
     })
 }
 
+/// A unit direction in the plane of the unit `normal`, at a random angle.
+fn along_plane(rng: &mut Rng, normal: DVec3) -> DVec3 {
+    let u = normal.any_orthonormal_vector();
+    let w = normal.cross(u);
+    let phi = rng.uniform(0.0, std::f64::consts::TAU);
+    phi.cos() * u + phi.sin() * w
+}
+
+/// N·P + d for the plane at `p`, to nearly twice f64 precision, and the
+/// size of its terms (|N|·|P| + |d|), to tell how clear of 0 it is.
+fn plane_distance(plane: &Plane, p: DVec3) -> (f64, f64) {
+    let distance = accurate_dot(plane.normal, p, plane.d);
+    (distance, plane.normal.abs().dot(p.abs()) + plane.d.abs())
+}
+
 /// The plane, ray and interval of one case, and the scale of its t.
 struct PlaneCase {
     what: &'static str,
@@ -107,9 +122,8 @@ fn crossing(rng: &mut Rng, s: f64, m: f64) -> Option<PlaneCase> {
     let origin = rng.vec3(s);
     let direction = rng.unit_vec3() * m;
     let approach = accurate_dot(normal, direction, 0.0);
-    let distance = accurate_dot(normal, origin, plane.d);
     let approach_size = normal.abs().dot(direction.abs());
-    let distance_size = normal.abs().dot(origin.abs()) + plane.d.abs();
+    let (distance, distance_size) = plane_distance(&plane, origin);
     if approach.abs() < 1e-3 * approach_size
         || distance.abs() < 1e-4 * distance_size
     {
@@ -133,10 +147,7 @@ fn crossing(rng: &mut Rng, s: f64, m: f64) -> Option<PlaneCase> {
 /// above it: t = h / sin α, far along the ray.
 fn grazing(rng: &mut Rng, s: f64, m: f64) -> Option<PlaneCase> {
     let normal = rng.unit_vec3();
-    let u = normal.any_orthonormal_vector();
-    let w = normal.cross(u);
-    let phi = rng.uniform(0.0, std::f64::consts::TAU);
-    let along = phi.cos() * u + phi.sin() * w;
+    let along = along_plane(rng, normal);
     let alpha = 10f64.powf(rng.uniform(-6.0, -1.0));
     let height = s * rng.uniform(0.1, 1.0);
     let foot = rng.vec3(s);
@@ -147,8 +158,7 @@ fn grazing(rng: &mut Rng, s: f64, m: f64) -> Option<PlaneCase> {
     let origin = foot + height * normal;
     let direction = (alpha.cos() * along - alpha.sin() * normal) * m;
     let approach = accurate_dot(normal, direction, 0.0);
-    let distance = accurate_dot(normal, origin, plane.d);
-    let distance_size = normal.abs().dot(origin.abs()) + plane.d.abs();
+    let (distance, distance_size) = plane_distance(&plane, origin);
     if distance.abs() < 1e-4 * distance_size {
         return None;
     }
@@ -261,10 +271,7 @@ fn far_plane(rng: &mut Rng, _s: f64, m: f64) -> Option<PlaneCase> {
 /// of operations then rounds to within 8ε) or clearly not.
 fn rounded_parallel(rng: &mut Rng, s: f64, m: f64) -> Option<PlaneCase> {
     let normal = rng.unit_vec3();
-    let u = normal.any_orthonormal_vector();
-    let w = normal.cross(u);
-    let phi = rng.uniform(0.0, std::f64::consts::TAU);
-    let along = phi.cos() * u + phi.sin() * w;
+    let along = along_plane(rng, normal);
     let plane = Plane {
         normal,
         d: rng.uniform(-s, s),
@@ -284,8 +291,7 @@ fn rounded_parallel(rng: &mut Rng, s: f64, m: f64) -> Option<PlaneCase> {
     if approach.abs() > 4.0 * eps * normal.abs().dot(direction.abs()) {
         return None;
     }
-    let distance = accurate_dot(normal, origin, plane.d);
-    let distance_size = normal.abs().dot(origin.abs()) + plane.d.abs();
+    let (distance, distance_size) = plane_distance(&plane, origin);
     let clear = if in_plane {
         distance.abs() <= 4.0 * eps * distance_size
     } else {
@@ -525,8 +531,9 @@ fn small_point(rng: &mut Rng) -> DVec2 {
     DVec2::new(rng.below(17) as f64 - 8.0, rng.below(17) as f64 - 8.0)
 }
 
-/// A convex polygon on a circle and points clearly inside or outside it.
-fn circle_case(rng: &mut Rng, case: &mut Case) {
+/// A convex polygon on a circle at any scale from 1e-3 to 1e6 (drawn
+/// again until it has three corners), and its centroid.
+fn some_circle_polygon(rng: &mut Rng) -> (Vec<DVec2>, DVec2) {
     let s = rng.magnitude(1e-3, 1e6).abs();
     let polygon = loop {
         let polygon = circle_polygon(rng, s);
@@ -535,6 +542,33 @@ fn circle_case(rng: &mut Rng, case: &mut Case) {
         }
     };
     let centre = polygon.iter().sum::<DVec2>() / polygon.len() as f64;
+    (polygon, centre)
+}
+
+/// `in` or `out`: the edge test's verdict on `p`.
+fn inside_word(polygon: &[DVec2], p: DVec2) -> &'static str {
+    if inside_convex(polygon, p) {
+        "in"
+    } else {
+        "out"
+    }
+}
+
+/// Asks for the edge test of `polygon` at each of `probes`, and answers.
+fn inside_at_probes(case: &mut Case, polygon: &[DVec2], probes: &[DVec2]) {
+    case.ask(format!(
+        "inside_convex({}) at {}",
+        show_polygon(polygon),
+        show_polygon(probes)
+    ));
+    for &p in probes {
+        case.word(inside_word(polygon, p));
+    }
+}
+
+/// A convex polygon on a circle and points clearly inside or outside it.
+fn circle_case(rng: &mut Rng, case: &mut Case) {
+    let (polygon, centre) = some_circle_polygon(rng);
     let reach = polygon
         .iter()
         .map(|&p| p.distance(centre))
@@ -552,18 +586,7 @@ fn circle_case(rng: &mut Rng, case: &mut Case) {
             }
         })
         .collect();
-    case.ask(format!(
-        "inside_convex({}) at {}",
-        show_polygon(&polygon),
-        show_polygon(&probes)
-    ));
-    for p in probes {
-        case.word(if inside_convex(&polygon, p) {
-            "in"
-        } else {
-            "out"
-        });
-    }
+    inside_at_probes(case, &polygon, &probes);
 }
 
 /// A convex lattice polygon (scaled by a power of two) and points on its
@@ -596,30 +619,12 @@ fn lattice_case(rng: &mut Rng, case: &mut Case) {
             }
         })
         .collect();
-    case.ask(format!(
-        "inside_convex({}) at {}",
-        show_polygon(&polygon),
-        show_polygon(&probes)
-    ));
-    for p in probes {
-        case.word(if inside_convex(&polygon, p) {
-            "in"
-        } else {
-            "out"
-        });
-    }
+    inside_at_probes(case, &polygon, &probes);
 }
 
 /// Fewer than three corners, a NaN point, a corner repeated.
 fn degenerate_case(rng: &mut Rng, case: &mut Case) {
-    let s = rng.magnitude(1e-3, 1e6).abs();
-    let polygon = loop {
-        let polygon = circle_polygon(rng, s);
-        if polygon.len() >= 3 {
-            break polygon;
-        }
-    };
-    let centre = polygon.iter().sum::<DVec2>() / polygon.len() as f64;
+    let (polygon, centre) = some_circle_polygon(rng);
     let (what, polygon, p) = match rng.below(3) {
         0 => {
             let keep = rng.below(3);
@@ -642,9 +647,5 @@ fn degenerate_case(rng: &mut Rng, case: &mut Case) {
         show_polygon(&polygon),
         show2(p)
     ));
-    case.word(if inside_convex(&polygon, p) {
-        "in"
-    } else {
-        "out"
-    });
+    case.word(inside_word(&polygon, p));
 }

@@ -28,6 +28,31 @@ fn hits(polygons: &[Polygon], ray: &Ray) -> usize {
         .count()
 }
 
+/// Rays that must each hit exactly one polygon: how many were shot, how
+/// many fell through, how many were counted twice, and the first of those.
+#[derive(Default)]
+struct ExactlyOnce {
+    rays: usize,
+    fall_through: usize,
+    twice: usize,
+    first: Option<String>,
+}
+
+impl ExactlyOnce {
+    /// Counts a ray that hit `n` polygons; `which` says which ray it was.
+    fn count(&mut self, n: usize, which: impl FnOnce() -> String) {
+        self.rays += 1;
+        match n {
+            0 => self.fall_through += 1,
+            1 => {}
+            _ => self.twice += 1,
+        }
+        if n != 1 {
+            self.first.get_or_insert_with(which);
+        }
+    }
+}
+
 /// The demo scene through the pinhole camera, one character per pixel.
 #[test]
 fn hit_map_ascii() {
@@ -159,36 +184,32 @@ fn fan_shared_edges_and_vertex() {
         }
     }
     let eye = v(0.4, 0.9, 4.0);
-    let (mut rays, mut fall_through, mut twice) = (0, 0, 0);
-    let mut first = None;
+    let mut tally = ExactlyOnce::default();
     for q in targets {
         for ray in [
             Ray::new(v(q.x, q.y, 2.0), v(0.0, 0.0, -1.0)),
             Ray::new(eye, (q - eye).normalize()),
         ] {
-            rays += 1;
             let n = hits(&fan, &ray);
-            match n {
-                0 => fall_through += 1,
-                1 => {}
-                _ => twice += 1,
-            }
-            if n != 1 {
-                first.get_or_insert(format!(
+            tally.count(n, || {
+                format!(
                     "the ray from {} through {q} hits {n} polygons",
                     ray.origin
-                ));
-            }
+                )
+            });
         }
     }
-    assert_eq!(rays, 2 * (2 + 8 * 49 + 2 * 49 + 41 * 41), "rays shot");
+    assert_eq!(tally.rays, 2 * (2 + 8 * 49 + 2 * 49 + 41 * 41), "rays shot");
     assert!(
-        (fall_through, twice) == (0, 0),
+        (tally.fall_through, tally.twice) == (0, 0),
         "rays through the fan that fall through a shared edge or vertex, \
-         and rays counted by two polygons: expected 0 and 0 of {rays} (every \
-         ray hits exactly one polygon), got {fall_through} and {twice}; the \
+         and rays counted by two polygons: expected 0 and 0 of {} (every \
+         ray hits exactly one polygon), got {} and {}; the \
          first: {}",
-        first.unwrap_or_default()
+        tally.rays,
+        tally.fall_through,
+        tally.twice,
+        tally.first.unwrap_or_default()
     );
 }
 
@@ -259,8 +280,7 @@ fn stable_from_1e_minus_6_to_1e6() {
 /// 0 fall through, 0 counted twice.
 #[test]
 fn chain_with_an_almost_straight_vertex() {
-    let (mut rays, mut fall_through, mut twice) = (0, 0, 0);
-    let mut first = None;
+    let mut tally = ExactlyOnce::default();
     for i in 0..40 {
         let x0 = 0.1 + 0.0173 * f64::from(i);
         let x1 = 0.9 - 0.0131 * f64::from(i);
@@ -279,30 +299,27 @@ fn chain_with_an_almost_straight_vertex() {
                 targets.push(m + (b - m) * s);
             }
             for q in targets {
-                rays += 1;
                 let n =
                     hits(&pair, &Ray::new(v(q.x, q.y, 1.0), v(0.0, 0.0, -1.0)));
-                match n {
-                    0 => fall_through += 1,
-                    1 => {}
-                    _ => twice += 1,
-                }
-                if n != 1 {
-                    first.get_or_insert(format!(
+                tally.count(n, || {
+                    format!(
                         "the ray down through ({}, {}) on the chain {a} → {m} \
                          → {b} hits {n} polygons",
                         q.x, q.y
-                    ));
-                }
+                    )
+                });
             }
         }
     }
-    assert_eq!(rays, 40 * 6 * 49, "rays shot");
+    assert_eq!(tally.rays, 40 * 6 * 49, "rays shot");
     assert!(
-        (fall_through, twice) == (0, 0),
+        (tally.fall_through, tally.twice) == (0, 0),
         "rays along the shared chain that fall through, and rays counted by \
-         both polygons: expected 0 and 0 of {rays}, got {fall_through} and \
-         {twice}; the first: {}",
-        first.unwrap_or_default()
+         both polygons: expected 0 and 0 of {}, got {} and \
+         {}; the first: {}",
+        tally.rays,
+        tally.fall_through,
+        tally.twice,
+        tally.first.unwrap_or_default()
     );
 }

@@ -227,35 +227,27 @@ fn nearly_parallel_rays() {
                 }
             }
         }
-        // (2) parallel, above the plane: never a hit
-        checked += 1;
-        match ray_plane(
-            &plane,
-            &Ray::new(on_plane + 0.5 * n, along),
-            Interval::FORWARD,
-        ) {
-            RayPlane::Parallel => {}
-            got => {
+        // (2) parallel, above the plane: never a hit; (3) inside the
+        // plane: InPlane, never a hit at some random t
+        for (origin, expected, what) in [
+            (
+                on_plane + 0.5 * n,
+                RayPlane::Parallel,
+                "a ray parallel to the plane, 0.5 above it",
+            ),
+            (
+                on_plane + 3.0 * along,
+                RayPlane::InPlane,
+                "a ray lying in the plane (built from rounded points)",
+            ),
+        ] {
+            checked += 1;
+            let ray = Ray::new(origin, along);
+            let got = ray_plane(&plane, &ray, Interval::FORWARD);
+            if got != expected {
                 failures += 1;
                 first_failure.get_or_insert(format!(
-                    "a ray parallel to the plane, 0.5 above it: expected \
-                     Parallel, got {got:?}"
-                ));
-            }
-        }
-        // (3) inside the plane: InPlane, never a hit at some random t
-        checked += 1;
-        match ray_plane(
-            &plane,
-            &Ray::new(on_plane + 3.0 * along, along),
-            Interval::FORWARD,
-        ) {
-            RayPlane::InPlane => {}
-            got => {
-                failures += 1;
-                first_failure.get_or_insert(format!(
-                    "a ray lying in the plane (built from rounded points): \
-                     expected InPlane, got {got:?}"
+                    "{what}: expected {expected:?}, got {got:?}"
                 ));
             }
         }

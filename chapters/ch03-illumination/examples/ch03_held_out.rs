@@ -71,13 +71,22 @@ struct SphereCase {
     t_scale: f64,
 }
 
+/// A sphere at a random size s: its centre within `reach`·s of the
+/// origin in each coordinate, its radius `smallest`·s to 2s; and a length
+/// m for the ray's direction, 0.01 to 100.
+fn sphere_and_speed(rng: &mut Rng, reach: f64, smallest: f64) -> (Sphere, f64) {
+    let s = scale(rng);
+    let m = rng.magnitude(0.01, 100.0).abs();
+    let sphere =
+        Sphere::new(rng.vec3(reach * s), s * rng.uniform(smallest, 2.0));
+    (sphere, m)
+}
+
 /// From outside, aimed within 0.97 r of the centre (or beside it, past
 /// 1.05 r), or away from it; the interval all of t ≥ 0, or cutting off
 /// the near root, or both.
 fn from_outside(rng: &mut Rng) -> SphereCase {
-    let s = scale(rng);
-    let m = rng.magnitude(0.01, 100.0).abs();
-    let sphere = Sphere::new(rng.vec3(10.0 * s), s * rng.uniform(0.2, 2.0));
+    let (sphere, m) = sphere_and_speed(rng, 10.0, 0.2);
     let r = sphere.radius;
     let toward = rng.unit_vec3();
     let distance = r * rng.uniform(1.2, 30.0);
@@ -116,9 +125,7 @@ fn from_outside(rng: &mut Rng) -> SphereCase {
 
 /// From a point inside the sphere, any direction.
 fn from_inside(rng: &mut Rng) -> SphereCase {
-    let s = scale(rng);
-    let m = rng.magnitude(0.01, 100.0).abs();
-    let sphere = Sphere::new(rng.vec3(10.0 * s), s * rng.uniform(0.2, 2.0));
+    let (sphere, m) = sphere_and_speed(rng, 10.0, 0.2);
     let r = sphere.radius;
     let origin = sphere.center + r * rng.uniform(0.0, 0.9) * rng.unit_vec3();
     let interval = if rng.chance(0.7) {
@@ -139,9 +146,7 @@ fn from_inside(rng: &mut Rng) -> SphereCase {
 /// δ from 1e-1 down to 1e-10 (never below what the construction's own
 /// rounding can move).
 fn grazing(rng: &mut Rng) -> SphereCase {
-    let s = scale(rng);
-    let m = rng.magnitude(0.01, 100.0).abs();
-    let sphere = Sphere::new(rng.vec3(3.0 * s), s * rng.uniform(0.5, 2.0));
+    let (sphere, m) = sphere_and_speed(rng, 3.0, 0.5);
     let r = sphere.radius;
     let d = rng.unit_vec3();
     let side = across(rng, d);
@@ -190,9 +195,7 @@ fn far_away(rng: &mut Rng) -> SphereCase {
 /// starts: the near root is rounding noise about 0, cut off by the
 /// interval; the far side must come out precise.
 fn from_the_surface(rng: &mut Rng) -> SphereCase {
-    let s = scale(rng);
-    let m = rng.magnitude(0.01, 100.0).abs();
-    let sphere = Sphere::new(rng.vec3(10.0 * s), s * rng.uniform(0.2, 2.0));
+    let (sphere, m) = sphere_and_speed(rng, 10.0, 0.2);
     let r = sphere.radius;
     let normal = rng.unit_vec3();
     let origin = sphere.center + r * normal;

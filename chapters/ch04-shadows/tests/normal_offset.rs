@@ -5,6 +5,7 @@ use std::sync::Arc;
 use ch04::{
     DVec3, Interval, Offset, Ray, Shape, normal_offset_ray, shadow_ray,
 };
+use raystep_check::held_out::Rng;
 use raystep_check::{Table, num, vec3};
 use raystep_scene::Shape as SceneShape;
 
@@ -14,30 +15,28 @@ fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
 }
 
-/// SplitMix64: a few lines of deterministic random numbers, the same on
-/// every machine.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    /// A uniformly random unit vector.
-    fn unit(&mut self) -> DVec3 {
-        loop {
-            let p = v(self.next(), self.next(), self.next()) * 2.0 - DVec3::ONE;
-            let l2 = p.length_squared();
-            if l2 > 1e-4 && l2 <= 1.0 {
-                return p / l2.sqrt();
-            }
+/// A uniformly random unit vector: a point of the cube [−1, 1]³ inside
+/// the unit ball (and not at its centre), normalised.
+fn direction(rng: &mut Rng) -> DVec3 {
+    loop {
+        let p = rng.vec3(1.0);
+        let l2 = p.length_squared();
+        if l2 > 1e-4 && l2 <= 1.0 {
+            return p / l2.sqrt();
         }
     }
+}
+
+/// A random ray at the plane through `point` with unit normal `n`: from
+/// 3·`s` above it (and up to 2·`s` aside) to a point of it within 2·`s`.
+fn over_a_plane(rng: &mut Rng, point: DVec3, n: DVec3, s: f64) -> Ray {
+    let lateral = |rng: &mut Rng| {
+        let u = direction(rng);
+        u - u.dot(n) * n
+    };
+    let eye = point + s * (3.0 * n + 2.0 * lateral(rng));
+    let target = point + 2.0 * s * lateral(rng);
+    Ray::new(eye, (target - eye).normalize())
 }
 
 /// Chapter 3's shapes for these scene-file shapes.
@@ -111,8 +110,8 @@ fn cases(scale: f64) -> Vec<Case> {
             blocker: sphere_blocker,
             primary: |rng, s| {
                 let (c, r) = (v(0.3, -0.2, 0.1) * s, 1.5 * s);
-                let eye = c + 4.0 * r * rng.unit();
-                let target = c + 0.99 * r * rng.next().sqrt() * rng.unit();
+                let eye = c + 4.0 * r * direction(rng);
+                let target = c + 0.99 * r * rng.unit().sqrt() * direction(rng);
                 Ray::new(eye, (target - eye).normalize())
             },
         },
@@ -123,28 +122,14 @@ fn cases(scale: f64) -> Vec<Case> {
             primary: |rng, s| {
                 let (p0, n0) =
                     (v(0.2, -1.0, 0.3) * s, v(0.1, 1.0, -0.2).normalize());
-                let lateral = |rng: &mut Rng| {
-                    let u = rng.unit();
-                    u - u.dot(n0) * n0
-                };
-                let eye = p0 + s * (3.0 * n0 + 2.0 * lateral(rng));
-                let target = p0 + 2.0 * s * lateral(rng);
-                Ray::new(eye, (target - eye).normalize())
+                over_a_plane(rng, p0, n0, s)
             },
         },
         Case {
             name: "floor y = 0",
             surface: floor,
             blocker: floor_blocker,
-            primary: |rng, s| {
-                let lateral = |rng: &mut Rng| {
-                    let u = rng.unit();
-                    v(u.x, 0.0, u.z)
-                };
-                let eye = s * (v(0.0, 3.0, 0.0) + 2.0 * lateral(rng));
-                let target = 2.0 * s * lateral(rng);
-                Ray::new(eye, (target - eye).normalize())
-            },
+            primary: |rng, s| over_a_plane(rng, DVec3::ZERO, DVec3::Y, s),
         },
     ]
 }
@@ -242,7 +227,7 @@ fn stability(
         let scale = 10f64.powi(k);
         for (case_index, case) in cases(scale).into_iter().enumerate() {
             assert_eq!(case.name, names[case_index], "the cases' order");
-            let mut rng = Rng(0x5EED_2026);
+            let mut rng = Rng::new(0x5EED_2026);
             let mut counts = vec![(0, 0); strategies.len()];
             let mut n = 0;
             while n < rays {
@@ -261,7 +246,7 @@ fn stability(
                 };
                 // a random direction in that hemisphere, toward a "light"
                 // ten scene sizes away
-                let d = rng.unit();
+                let d = direction(&mut rng);
                 let d = if d.dot(normal) < 0.0 { -d } else { d };
                 let light = hit.point + 10.0 * scale * d;
                 for (strategy, count) in strategies.iter().zip(&mut counts) {

@@ -12,16 +12,18 @@ mod common;
 use common::{chapter_scene, quiet, world_from};
 
 /// Every pixel's primary ray of `world`, with its column and row.
-fn primary_rays(world: &World) -> impl Iterator<Item = (u32, u32, Ray)> + '_ {
-    (0..world.height).flat_map(move |row| {
-        (0..world.width).map(move |column| {
-            let ray =
-                world
-                    .camera
-                    .pixel_ray(column, row, world.width, world.height);
-            (column, row, ray)
-        })
-    })
+fn primary_rays(world: &World) -> impl Iterator<Item = (u32, u32, Ray)> {
+    world.camera.pixel_rays(world.width, world.height)
+}
+
+/// The largest kr of any material of `world`, in any channel: the best
+/// mirror.
+fn best_kr(world: &World) -> f64 {
+    world
+        .materials
+        .iter()
+        .map(|m| m.kr.max_element())
+        .fold(0.0, f64::max)
 }
 
 /// The largest channel difference of two colours.
@@ -314,11 +316,7 @@ fn contribution_rule_counts() {
     let mut table = Table::new(&COUNT_COLUMNS);
     for name in ["mirrors", "facing-mirrors"] {
         let world = chapter_scene(name, 48, 27);
-        let best_kr = world
-            .materials
-            .iter()
-            .map(|m| m.kr.max_element())
-            .fold(0.0, f64::max);
+        let best_kr = best_kr(&world);
         let mut previous: Option<RayCounts> = None;
         for threshold in [1e-1, 1e-2, 1e-3, 1e-4] {
             let (_, c) =
@@ -689,11 +687,7 @@ fn brightest_local(world: &World) -> DVec3 {
 fn no_weight_exceeds_one() {
     for name in ["mirrors", "facing-mirrors"] {
         let world = chapter_scene(name, 48, 27);
-        let best = world
-            .materials
-            .iter()
-            .map(|m| m.kr.max_element())
-            .fold(0.0, f64::max);
+        let best = best_kr(&world);
         assert!(best < 1.0, "{name}: the best mirror's kr is {best}");
         let mut deepest = 0;
         for (column, row, _) in primary_rays(&world) {

@@ -1,6 +1,7 @@
 //! Exercise 1: the refracted direction T, by Snell's law.
 use ch06::{DVec3, REFRACTIVE_INDICES, critical_angle, refract};
 use proptest::prelude::*;
+use raystep_check::held_out::Rng;
 use raystep_check::{Table, num_places, seeded, unit_vector};
 
 const INCIDENCE_DEGREES: [f64; 7] = [0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 89.0];
@@ -142,27 +143,14 @@ proptest! {
     }
 }
 
-/// SplitMix64: deterministic random numbers, the same on every machine.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn unit(&mut self) -> DVec3 {
-        loop {
-            let p = DVec3::new(self.next(), self.next(), self.next()) * 2.0
-                - DVec3::ONE;
-            let l2 = p.length_squared();
-            if l2 > 1e-4 && l2 <= 1.0 {
-                return p / l2.sqrt();
-            }
+/// A uniformly random unit vector: a point of the cube [−1, 1]³ inside
+/// the unit ball (and not at its centre), normalised.
+fn direction(rng: &mut Rng) -> DVec3 {
+    loop {
+        let p = rng.vec3(1.0);
+        let l2 = p.length_squared();
+        if l2 > 1e-4 && l2 <= 1.0 {
+            return p / l2.sqrt();
         }
     }
 }
@@ -170,11 +158,11 @@ impl Rng {
 /// `count` random surfaces (N, and a unit tangent U ⟂ N), the same ones on
 /// every run.
 fn random_frames(count: usize) -> Vec<(DVec3, DVec3)> {
-    let mut rng = Rng(0x5EED_2026);
+    let mut rng = Rng::new(0x5EED_2026);
     (0..count)
         .map(|_| {
-            let n = rng.unit();
-            let u = n.cross(rng.unit()).normalize();
+            let n = direction(&mut rng);
+            let u = n.cross(direction(&mut rng)).normalize();
             (n, u)
         })
         .collect()

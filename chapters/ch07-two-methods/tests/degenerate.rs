@@ -265,21 +265,16 @@ fn a_fan_cut_by_the_near_plane_stays_watertight() {
     // (overreach) the square; the pixels near its far edge are left out
     let world = &stage.world;
     let (mut inside, mut gaps, mut overreach) = (0, 0, 0);
-    for row in 0..world.height {
-        for column in 0..world.width {
-            let ray =
-                world
-                    .camera
-                    .pixel_ray(column, row, world.width, world.height);
-            let t = -ray.origin.y / ray.direction.y;
-            let p = ray.origin + ray.direction * t;
-            let drawn = raster.id_at(column, row).is_some();
-            if t > 0.0 && p.x.abs().max(p.z.abs()) < 0.8 * half {
-                inside += 1;
-                gaps += usize::from(!drawn);
-            } else if t <= 0.0 || p.x.abs().max(p.z.abs()) > 1.25 * half {
-                overreach += usize::from(drawn);
-            }
+    for (column, row, ray) in world.camera.pixel_rays(world.width, world.height)
+    {
+        let t = -ray.origin.y / ray.direction.y;
+        let p = ray.origin + ray.direction * t;
+        let drawn = raster.id_at(column, row).is_some();
+        if t > 0.0 && p.x.abs().max(p.z.abs()) < 0.8 * half {
+            inside += 1;
+            gaps += usize::from(!drawn);
+        } else if t <= 0.0 || p.x.abs().max(p.z.abs()) > 1.25 * half {
+            overreach += usize::from(drawn);
         }
     }
     assert!(inside > 48 * 27 / 3, "floor pixels: {inside}");

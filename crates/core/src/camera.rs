@@ -71,6 +71,21 @@ impl Camera {
         let v = (f64::from(row) + 0.5) / f64::from(height);
         self.ray(u, v)
     }
+
+    /// [`pixel_ray`](Camera::pixel_ray) of every pixel of a `width ×
+    /// height` image, row by row from the top: `(column, row, ray)`.
+    pub fn pixel_rays(
+        &self,
+        width: u32,
+        height: u32,
+    ) -> impl Iterator<Item = (u32, u32, Ray)> {
+        let camera = *self;
+        (0..height).flat_map(move |row| {
+            (0..width).map(move |column| {
+                (column, row, camera.pixel_ray(column, row, width, height))
+            })
+        })
+    }
 }
 
 #[cfg(test)]
@@ -95,5 +110,9 @@ mod tests {
         // rows count from the top
         assert!(cam.pixel_ray(0, 0, 4, 4).direction.y > 0.0);
         assert!(cam.pixel_ray(0, 3, 4, 4).direction.y < 0.0);
+        // every pixel once, row by row
+        let all: Vec<_> = cam.pixel_rays(4, 3).collect();
+        assert_eq!(all.len(), 12);
+        assert_eq!(all[6], (2, 1, cam.pixel_ray(2, 1, 4, 3)));
     }
 }

@@ -60,6 +60,8 @@
 #![deny(missing_docs)]
 
 mod error;
+mod format;
+mod indices;
 mod mesh;
 mod obj_check;
 mod raw;
@@ -74,6 +76,8 @@ use toml::de::DeTable;
 
 use error::Context;
 pub use error::SceneError;
+use format::{format_number, format_vec};
+pub use indices::{REFRACTIVE_INDICES, index_of_refraction};
 pub use mesh::{Mesh, MeshError};
 use raw::{RawMaterial, RawObject, RawScene, Table};
 
@@ -89,32 +93,6 @@ pub const DEFAULT_VFOV: f64 = 40.0;
 pub const DEFAULT_AMBIENT: f64 = 0.1;
 /// The name of the material that objects without `material` use.
 pub const DEFAULT_MATERIAL: &str = "default";
-
-/// The lecture's table of refractive indices, usable by name as `ior`.
-pub const REFRACTIVE_INDICES: [(&str, f64); 7] = [
-    ("vacuum", 1.0),
-    ("air", 1.0003),
-    ("water", 1.33),
-    ("glass", 1.5),
-    ("ice", 1.309),
-    ("quartz", 1.544),
-    ("diamond", 2.417),
-];
-
-/// The index of refraction of a material in [`REFRACTIVE_INDICES`], by
-/// name (ASCII case does not matter).
-///
-/// ```
-/// assert_eq!(raystep_scene::index_of_refraction("water"), Some(1.33));
-/// assert_eq!(raystep_scene::index_of_refraction("Glass"), Some(1.5));
-/// assert_eq!(raystep_scene::index_of_refraction("jelly"), None);
-/// ```
-pub fn index_of_refraction(name: &str) -> Option<f64> {
-    REFRACTIVE_INDICES
-        .iter()
-        .find(|(n, _)| n.eq_ignore_ascii_case(name))
-        .map(|&(_, ior)| ior)
-}
 
 /// A checked scene: everything a chapter needs to render it.
 #[derive(Clone, Debug, PartialEq)]
@@ -519,26 +497,6 @@ pub fn parse(source: &str, file_name: &str) -> Result<Scene, SceneError> {
     build(raw, &context)
 }
 
-/// `v` as the error messages show numbers: `-1`, `0.5`, `inf`, `nan`.
-pub(crate) fn format_number(v: f64) -> String {
-    if v.is_nan() {
-        "nan".to_owned()
-    } else if v != 0.0 && v.is_finite() && !(1e-6..1e16).contains(&v.abs()) {
-        format!("{v:e}")
-    } else {
-        v.to_string()
-    }
-}
-
-pub(crate) fn format_vec(v: DVec3) -> String {
-    format!(
-        "[{}, {}, {}]",
-        format_number(v.x),
-        format_number(v.y),
-        format_number(v.z)
-    )
-}
-
 /// The checks that compare a field with a limit or with other fields.
 fn build(raw: RawScene, cx: &Context) -> Result<Scene, SceneError> {
     let size = |value: Option<Spanned<i64>>, default: u32| match value {
@@ -706,29 +664,14 @@ fn material(
 ) -> Result<Material, SceneError> {
     let Table(m) = raw.into_inner();
     let kd = m.kd.map_or(DVec3::splat(0.7), |c| c.0);
-    let p = match m.p {
+    let p = match &m.p {
         None => 32.0,
-        Some(p) if p.get_ref().0 > 0.0 => p.get_ref().0,
-        Some(p) => {
-            return Err(cx.error(
-                p.span(),
-                format!(
-                    "must be positive, got {}",
-                    format_number(p.get_ref().0)
-                ),
-            ));
-        }
+        Some(p) => shapes::positive(p, cx)?,
     };
     let checker = match m.checker {
         None => None,
         Some(Table(c)) => {
-            let size = c.size.get_ref().0;
-            if size <= 0.0 {
-                return Err(cx.error(
-                    c.size.span(),
-                    format!("must be positive, got {}", format_number(size)),
-                ));
-            }
+            let size = shapes::positive(&c.size, cx)?;
             let kd = c.kd.map_or(DVec3::splat(0.1), |c| c.0);
             Some(Checker {
                 size,

@@ -19,7 +19,8 @@ use serde::de::{
 };
 use toml::Spanned;
 
-use crate::{REFRACTIVE_INDICES, format_number, index_of_refraction};
+use crate::format::format_number;
+use crate::indices::{REFRACTIVE_INDICES, index_of_refraction};
 
 /// The whole file.
 #[derive(Deserialize)]

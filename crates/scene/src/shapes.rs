@@ -7,14 +7,12 @@ use raystep_core::DVec3;
 use toml::Spanned;
 
 use crate::error::Context;
+use crate::format::{format_number, format_vec};
 use crate::raw::{
     Finite, RawBlobby, RawBox, RawCylinder, RawEllipsoid, RawObject, RawPlane,
     RawPolygon, RawSaddle, RawSphere, RawTorus, RawTriangle, Table, Vec3,
 };
-use crate::{
-    Ball, SceneError, Shape, TorusSolver, TriangleTest, format_number,
-    format_vec,
-};
+use crate::{Ball, SceneError, Shape, TorusSolver, TriangleTest};
 
 /// Every shape key, in the order error messages list them.
 pub(crate) const KEYS: [&str; 10] = [
@@ -103,7 +101,10 @@ pub(crate) fn shape(
 }
 
 /// The number, if it is positive.
-fn positive(v: &Spanned<Finite>, cx: &Context) -> Result<f64, SceneError> {
+pub(crate) fn positive(
+    v: &Spanned<Finite>,
+    cx: &Context,
+) -> Result<f64, SceneError> {
     let value = v.get_ref().0;
     if value > 0.0 {
         Ok(value)

@@ -16,6 +16,28 @@ fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
 }
 
+/// What the example and the minimal scene share: the eye at (0, 1, 5)
+/// looking at the origin, every other value of the image, the camera,
+/// the ambient and the background at its default (the example writes
+/// the defaults out); no lights, materials or objects yet.
+fn framed() -> Scene {
+    Scene {
+        width: 320,
+        height: 180,
+        camera: CameraSpec {
+            look_from: v(0.0, 1.0, 5.0),
+            look_at: DVec3::ZERO,
+            up: DVec3::Y,
+            vfov: 40.0,
+        },
+        ambient: DVec3::splat(0.1),
+        background: DVec3::ZERO,
+        lights: vec![],
+        materials: vec![],
+        objects: vec![],
+    }
+}
+
 #[test]
 fn the_complete_example_scene_reads_into_the_expected_values() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/example.toml");
@@ -54,16 +76,6 @@ fn the_complete_example_scene_reads_into_the_expected_values() {
         ..Material::default()
     };
     let expected = Scene {
-        width: 320,
-        height: 180,
-        camera: CameraSpec {
-            look_from: v(0.0, 1.0, 5.0),
-            look_at: DVec3::ZERO,
-            up: DVec3::Y,
-            vfov: 40.0,
-        },
-        ambient: DVec3::splat(0.1),
-        background: DVec3::ZERO,
         lights: vec![
             Light {
                 position: v(5.0, 5.0, 5.0),
@@ -184,6 +196,7 @@ fn the_complete_example_scene_reads_into_the_expected_values() {
                 line: 85,
             },
         ],
+        ..framed()
     };
     assert_eq!(scene, expected);
     for object in &scene.objects {
@@ -206,17 +219,6 @@ fn a_scene_with_only_a_camera_gets_every_default() {
     assert_eq!(
         scene,
         Scene {
-            width: 320,
-            height: 180,
-            camera: CameraSpec {
-                look_from: v(0.0, 1.0, 5.0),
-                look_at: DVec3::ZERO,
-                up: DVec3::Y,
-                vfov: 40.0,
-            },
-            ambient: DVec3::splat(0.1),
-            background: DVec3::ZERO,
-            lights: vec![],
             materials: vec![Material {
                 name: "default".into(),
                 ka: DVec3::splat(0.7),
@@ -228,7 +230,7 @@ fn a_scene_with_only_a_camera_gets_every_default() {
                 ior: 1.0,
                 checker: None,
             }],
-            objects: vec![],
+            ..framed()
         }
     );
 }
