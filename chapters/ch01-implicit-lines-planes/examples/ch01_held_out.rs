@@ -9,16 +9,8 @@ use raystep_check::held_out::{self, Case, Exercise, Rng, show2, show3};
 
 fn main() -> ExitCode {
     held_out::main(&[
-        Exercise {
-            name: "line_through_points",
-            run: line,
-            tolerance: 1e-7,
-        },
-        Exercise {
-            name: "plane_through_points",
-            run: plane,
-            tolerance: 1e-7,
-        },
+        Exercise::new("line_through_points", line, 1e-7),
+        Exercise::new("plane_through_points", plane, 1e-7),
     ])
 }
 

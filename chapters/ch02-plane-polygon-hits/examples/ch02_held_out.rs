@@ -14,16 +14,8 @@ use raystep_check::held_out::{self, Case, Exercise, Rng, short, show2, show3};
 
 fn main() -> ExitCode {
     held_out::main(&[
-        Exercise {
-            name: "ray_plane",
-            run: ray_plane_case,
-            tolerance: 1e-7,
-        },
-        Exercise {
-            name: "inside_polygon",
-            run: inside_polygon_case,
-            tolerance: 1e-9,
-        },
+        Exercise::new("ray_plane", ray_plane_case, 1e-7),
+        Exercise::new("inside_polygon", inside_polygon_case, 1e-9),
     ])
 }
 

@@ -14,21 +14,9 @@ use raystep_check::held_out::{self, Case, Exercise, Rng, short, show3};
 
 fn main() -> ExitCode {
     held_out::main(&[
-        Exercise {
-            name: "sphere_hit",
-            run: sphere_hit_case,
-            tolerance: 1e-7,
-        },
-        Exercise {
-            name: "reflect",
-            run: reflect_case,
-            tolerance: 1e-9,
-        },
-        Exercise {
-            name: "local_shading",
-            run: local_shading_case,
-            tolerance: 1e-9,
-        },
+        Exercise::new("sphere_hit", sphere_hit_case, 1e-7),
+        Exercise::new("reflect", reflect_case, 1e-9),
+        Exercise::new("local_shading", local_shading_case, 1e-9),
     ])
 }
 

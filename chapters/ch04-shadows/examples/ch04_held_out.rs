@@ -17,16 +17,8 @@ use raystep_scene::Shape as Spec;
 
 fn main() -> ExitCode {
     held_out::main(&[
-        Exercise {
-            name: "shadow",
-            run: shadow_case,
-            tolerance: 1e-12,
-        },
-        Exercise {
-            name: "normal_offset",
-            run: normal_offset_case,
-            tolerance: 1e-9,
-        },
+        Exercise::new("shadow", shadow_case, 1e-12),
+        Exercise::new("normal_offset", normal_offset_case, 1e-9),
     ])
 }
 

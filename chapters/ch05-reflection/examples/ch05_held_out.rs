@@ -16,16 +16,8 @@ use raystep_scene::{Light, Shape as Spec};
 
 fn main() -> ExitCode {
     held_out::main(&[
-        Exercise {
-            name: "reflection",
-            run: reflection_case,
-            tolerance: 1e-9,
-        },
-        Exercise {
-            name: "recursion",
-            run: recursion_case,
-            tolerance: 1e-9,
-        },
+        Exercise::new("reflection", reflection_case, 1e-9),
+        Exercise::new("recursion", recursion_case, 1e-9),
     ])
 }
 

@@ -10,16 +10,8 @@ use raystep_check::held_out::{self, Case, Exercise, Rng, short, show3};
 
 fn main() -> ExitCode {
     held_out::main(&[
-        Exercise {
-            name: "refraction",
-            run: refraction_case,
-            tolerance: 1e-9,
-        },
-        Exercise {
-            name: "schlick",
-            run: schlick_case,
-            tolerance: 1e-9,
-        },
+        Exercise::new("refraction", refraction_case, 1e-9),
+        Exercise::new("schlick", schlick_case, 1e-9),
     ])
 }
 

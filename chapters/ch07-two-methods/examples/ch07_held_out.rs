@@ -12,16 +12,8 @@ use raystep_check::held_out::{self, Case, Exercise, Rng, short, show2};
 
 fn main() -> ExitCode {
     held_out::main(&[
-        Exercise {
-            name: "coverage",
-            run: coverage_case,
-            tolerance: 1e-9,
-        },
-        Exercise {
-            name: "depth_test",
-            run: depth_test_case,
-            tolerance: 1e-9,
-        },
+        Exercise::new("coverage", coverage_case, 1e-9),
+        Exercise::new("depth_test", depth_test_case, 1e-9),
     ])
 }
 

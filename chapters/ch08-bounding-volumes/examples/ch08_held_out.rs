@@ -16,7 +16,12 @@ use ch08::{
     near_first_closest_hit, slab_test, sphere_of_points, split_cost,
     torus_quartic, watertight,
 };
+use common::half_diameter;
 use raystep_check::held_out::{self, Case, Exercise, Rng, short, show3};
+
+// The helpers the chapter's tests judge by, shared rather than copied.
+#[path = "../tests/common/mod.rs"]
+mod common;
 
 fn main() -> ExitCode {
     held_out::main(&[
@@ -105,23 +110,15 @@ fn along(axis: usize, speed: f64, zero: f64) -> DVec3 {
     d
 }
 
-/// The plain slab test (no widened exit, no care for NaN), to keep the
-/// draws and the answers' shape independent of the code judged (which is
-/// exercise 1 itself, or a hierarchy walked with it); used only where a
-/// margin of 1e-9 makes its rounding irrelevant.
+/// The plain slab test ([`common::plain_slab`]; an empty box missed), to
+/// keep the draws and the answers' shape independent of the code judged
+/// (which is exercise 1 itself, or a hierarchy walked with it); used only
+/// where a margin of 1e-9 makes its rounding irrelevant.
 fn plain_slab(b: &Aabb, ray: &Ray, interval: Interval) -> Option<Interval> {
     if b.is_empty() {
         return None;
     }
-    let (mut t0, mut t1) = (interval.min, interval.max);
-    for axis in 0..3 {
-        let inverse = 1.0 / ray.direction[axis];
-        let a = (b.min[axis] - ray.origin[axis]) * inverse;
-        let c = (b.max[axis] - ray.origin[axis]) * inverse;
-        t0 = t0.max(a.min(c));
-        t1 = t1.min(a.max(c));
-    }
-    (t0 <= t1).then(|| Interval::new(t0, t1))
+    common::plain_slab(b, ray, interval)
 }
 
 /// Is the answer for this box, ray and interval the same for boxes and
@@ -763,18 +760,6 @@ fn torus_quartic_case(rng: &mut Rng, case: &mut Case) {
 // ---------------------------------------------------------------------
 // Exercise 4: a bounding sphere of points.
 // ---------------------------------------------------------------------
-
-/// Half the largest distance between two points: no sphere around them is
-/// smaller.
-fn half_diameter(points: &[DVec3]) -> f64 {
-    let mut largest: f64 = 0.0;
-    for (i, &a) in points.iter().enumerate() {
-        for &b in &points[i + 1..] {
-            largest = largest.max(a.distance_squared(b));
-        }
-    }
-    0.5 * largest.sqrt()
-}
 
 /// A point set: on a sphere in opposite pairs (the smallest sphere known),
 /// a box's corners (its circumsphere the smallest), points on a segment

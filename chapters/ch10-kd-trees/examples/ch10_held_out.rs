@@ -13,16 +13,8 @@ use raystep_check::held_out::{self, Case, Exercise, Rng, short, show3};
 
 fn main() -> ExitCode {
     held_out::main(&[
-        Exercise {
-            name: "split_cost",
-            run: split_cost_case,
-            tolerance: 1e-9,
-        },
-        Exercise {
-            name: "traversal_step",
-            run: traversal_step_case,
-            tolerance: 1e-9,
-        },
+        Exercise::new("split_cost", split_cost_case, 1e-9),
+        Exercise::new("traversal_step", traversal_step_case, 1e-9),
     ])
 }
 

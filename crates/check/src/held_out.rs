@@ -54,6 +54,22 @@ pub struct Exercise {
     pub tolerance: f64,
 }
 
+impl Exercise {
+    /// The held-out cases of exercise `name`: `run` draws and answers
+    /// one, answers agree within `tolerance`.
+    pub const fn new(
+        name: &'static str,
+        run: fn(&mut Rng, &mut Case),
+        tolerance: f64,
+    ) -> Exercise {
+        Exercise {
+            name,
+            run,
+            tolerance,
+        }
+    }
+}
+
 /// A small seeded generator (SplitMix64): the same numbers for a seed on
 /// every machine, with no dependency whose stream could change.
 #[derive(Debug, Clone)]

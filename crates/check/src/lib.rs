@@ -4,7 +4,9 @@
 //! computes in another order (and so rounds differently in the last bits)
 //! still matches the reference's snapshot. For the same reason rendered
 //! images are compared with a [`Tolerance`] by [`assert_image_matches`].
-//! [`held_out`] holds the protocol of `raystep grade`'s held-out cases.
+//! [`held_out`] holds the protocol of `raystep grade`'s held-out cases, and
+//! [`verdicts`] how `raystep check` reads what the tests printed into one
+//! verdict per exercise.
 #![deny(missing_docs)]
 
 pub mod held_out;
@@ -12,6 +14,7 @@ mod image_compare;
 mod round;
 mod seeded;
 mod table;
+pub mod verdicts;
 
 pub use image_compare::{
     Tolerance, assert_image_matches, diff_dir, differing_pixels,

@@ -5,7 +5,7 @@
 use std::io::Write;
 use std::path::Path;
 
-use crate::Error;
+use crate::error::Error;
 
 /// An error naming `path` if [`write`] could not write it: its folder
 /// does not exist, or it is a folder. To check before long work.

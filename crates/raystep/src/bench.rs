@@ -63,64 +63,9 @@ pub enum AccelArg {
     Fast,
 }
 
-/// `--fast`: the appendix's steps, by name.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum FastArg {
-    /// Step 2: compact nodes, children ordered by the ray's direction.
-    Ordered,
-    /// Step 3: and the leaves' triangles in f32.
-    LeafF32,
-    /// Step 4: and the full-sweep SAH tree.
-    SweepTree,
-    /// Step 4b: step 3's tree improved by tree rotations.
-    RotatedTree,
-    /// Step 5: 4-wide nodes, boxes tested one by one.
-    Bvh4Scalar,
-    /// 4-wide nodes, SSE.
-    Bvh4Sse,
-    /// 8-wide nodes, one by one.
-    Bvh8Scalar,
-    /// 8-wide nodes, AVX (one by one where the CPU lacks it).
-    Bvh8Avx,
-    /// 8-wide nodes compressed to 96 bytes, AVX2 (one by one where the
-    /// CPU lacks it).
-    Bvh8Compressed,
-    /// `bvh8-avx` on the full-sweep tree.
-    Bvh8AvxSweep,
-    /// `bvh8-compressed` on the full-sweep tree.
-    Bvh8CompressedSweep,
-    /// Step 6: `bvh8-avx`, each triangle's edges tested at once (AVX2).
-    Bvh8AvxTri,
-    /// `bvh8-compressed`, each triangle's edges tested at once.
-    Bvh8CompressedTri,
-    /// Step 7: `bvh8-avx-tri`, its tree built on `--threads` threads.
-    Bvh8Par,
-    /// `bvh8-compressed-tri`, its tree built on `--threads` threads.
-    Bvh8CompressedPar,
-}
-
-impl FastArg {
-    /// The step it names.
-    pub fn step(self) -> ch11::Step {
-        match self {
-            FastArg::Ordered => ch11::Step::Ordered,
-            FastArg::LeafF32 => ch11::Step::LeafLayout,
-            FastArg::SweepTree => ch11::Step::SweepTree,
-            FastArg::RotatedTree => ch11::Step::RotatedTree,
-            FastArg::Bvh4Scalar => ch11::Step::Wide4Scalar,
-            FastArg::Bvh4Sse => ch11::Step::Wide4,
-            FastArg::Bvh8Scalar => ch11::Step::Wide8Scalar,
-            FastArg::Bvh8Avx => ch11::Step::Wide8,
-            FastArg::Bvh8Compressed => ch11::Step::Compressed8,
-            FastArg::Bvh8AvxSweep => ch11::Step::Wide8Sweep,
-            FastArg::Bvh8CompressedSweep => ch11::Step::Compressed8Sweep,
-            FastArg::Bvh8AvxTri => ch11::Step::Wide8Triangles,
-            FastArg::Bvh8CompressedTri => ch11::Step::Compressed8Triangles,
-            FastArg::Bvh8Par => ch11::Step::Wide8Parallel,
-            FastArg::Bvh8CompressedPar => ch11::Step::Compressed8Parallel,
-        }
-    }
-}
+/// `--fast`: the appendix's steps, by the names (and with the help) chapter
+/// 11 gives them.
+pub use ch11::Step as FastArg;
 
 /// `--grid-fill`: which cells list a triangle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]

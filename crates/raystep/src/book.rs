@@ -17,7 +17,9 @@ use mdbook_driver::book::{Book, BookItem};
 use mdbook_preprocessor::{Preprocessor, PreprocessorContext};
 
 use crate::chapters::CHAPTERS;
-use crate::{Error, shown, workspace};
+use crate::error::Error;
+use crate::shown_path::{relative, shown};
+use crate::workspace;
 
 /// What `raystep book` was asked to do.
 #[derive(Debug)]
@@ -170,7 +172,7 @@ fn preprocess_book(src: &Path, book: &mut Book) -> anyhow::Result<()> {
         if first_error.is_some() {
             return;
         }
-        let page = crate::relative(&src.join(path));
+        let page = relative(&src.join(path));
         match raystep_book::preprocess(&page, &chapter.content) {
             Ok(content) => chapter.content = content,
             Err(error) => first_error = Some(error),

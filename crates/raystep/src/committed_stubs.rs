@@ -4,13 +4,13 @@
 //! left a file out (`grade`).
 
 use std::collections::BTreeMap;
-use std::io;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 
 use raystep_figure::Chapter;
 
-use crate::Error;
+use crate::error::Error;
+use crate::git::git;
+use crate::reference_module::reference_module;
 
 /// Every stub of some chapters, and the working-tree files that differ.
 #[derive(Debug, Default)]
@@ -31,7 +31,8 @@ impl Stubs {
     }
 
     /// Writes the chapter's stubs into `exercise/` and, when `modules`,
-    /// over the exercise modules in `src/` of the workspace at `copy`.
+    /// over the exercise modules in `src/` (wherever below it each lives)
+    /// of the workspace at `copy`.
     pub fn write(
         &self,
         copy: &Path,
@@ -41,12 +42,12 @@ impl Stubs {
         let dir = copy.join("chapters").join(chapter.package);
         for exercise in chapter.exercises {
             let text = self.text(chapter, exercise);
-            let mut folders = vec!["exercise"];
+            let mut paths =
+                vec![dir.join("exercise").join(format!("{exercise}.rs"))];
             if modules {
-                folders.push("src");
+                paths.push(reference_module(&dir, exercise)?);
             }
-            for folder in folders {
-                let path = dir.join(folder).join(format!("{exercise}.rs"));
+            for path in paths {
                 std::fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
             }
         }
@@ -129,30 +130,16 @@ fn from_git(root: &Path, relative: &Path) -> Result<Option<String>, Error> {
             .collect::<Vec<_>>()
             .join("/")
     );
-    let out = Command::new("git")
-        .args(["show", &spec])
-        .current_dir(root)
-        .env_remove("GIT_DIR")
-        .env_remove("GIT_WORK_TREE")
-        .env_remove("GIT_INDEX_FILE")
-        .stdin(Stdio::null())
-        .stderr(Stdio::null())
-        .output();
-    match out {
-        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(None),
-        Err(e) => Err(Error::Spawn {
-            program: "git".to_string(),
-            source: e,
-        }),
-        Ok(out) if out.status.success() => {
-            Ok(String::from_utf8(out.stdout).ok())
-        }
-        Ok(_) => Ok(None),
-    }
+    Ok(match git(root, &["show", &spec])? {
+        Some(out) if out.status.success() => String::from_utf8(out.stdout).ok(),
+        _ => None,
+    })
 }
 
 #[cfg(test)]
 mod tests {
+    use std::process::Command;
+
     use super::*;
 
     fn git(dir: &Path, args: &[&str]) {
@@ -177,9 +164,8 @@ mod tests {
     }
 
     fn write(root: &Path, exercise: &str, text: &str) {
-        let path = root.join(format!("chapters/ch01-a/exercise/{exercise}.rs"));
-        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
-        std::fs::write(path, text).unwrap();
+        let path = format!("chapters/ch01-a/exercise/{exercise}.rs");
+        crate::test_files::write(&root.join(path), text);
     }
 
     /// An instructor tries exercise `a` in place: the committed stub is
@@ -209,21 +195,22 @@ mod tests {
             ) && note.ends_with("chapters/ch01-a/exercise/a.rs"),
             "{note}"
         );
-        // Written into a copy: exercise/ and, if asked, src/.
+        // Written into a copy: exercise/ and, if asked, over the reference
+        // modules wherever they live below src/.
         let copy = tempfile::tempdir().unwrap();
-        for folder in ["exercise", "src"] {
-            std::fs::create_dir_all(
-                copy.path().join("chapters/ch01-a").join(folder),
-            )
-            .unwrap();
+        let chapter_dir = copy.path().join("chapters/ch01-a");
+        for folder in ["exercise", "src/part"] {
+            std::fs::create_dir_all(chapter_dir.join(folder)).unwrap();
         }
+        std::fs::write(chapter_dir.join("src/a.rs"), "fn a() { 1 }").unwrap();
+        std::fs::write(chapter_dir.join("src/part/b.rs"), "fn b() { 2 }")
+            .unwrap();
         stubs.write(copy.path(), &chapter, true).unwrap();
-        let read = |p: &str| {
-            std::fs::read_to_string(copy.path().join("chapters/ch01-a").join(p))
-                .unwrap()
-        };
+        let read =
+            |p: &str| std::fs::read_to_string(chapter_dir.join(p)).unwrap();
         assert_eq!(read("exercise/a.rs"), "fn a() { todo!() }\n");
         assert_eq!(read("src/a.rs"), "fn a() { todo!() }\n");
+        assert_eq!(read("src/part/b.rs"), "fn b() { todo!() }\n");
     }
 
     /// Without git, a file is taken only while it is still a stub.

@@ -9,18 +9,20 @@
 //! crate's artifacts are the ones the workspace's own build makes (with
 //! its settings, where it builds into a target folder not its own), and
 //! the chapter's are apart (a setting of their own, as
-//! [`crate::check::separate_artifacts`] explains), so only the chapter is
+//! [`crate::separate_artifacts`] explains), so only the chapter is
 //! compiled again, and neither build takes the other's chapter for fresh.
 
 use std::path::{Path, PathBuf};
 
 use raystep_figure::Chapter;
 
-use crate::Error;
-use crate::check::{
-    self, Artifacts, BuildFailure, CargoFailure, Report, Run, Verdict,
-};
-use crate::committed_stubs;
+use raystep_check::verdicts::{BuildFailure, CargoFailure, Report, Verdict};
+
+use crate::error::Error;
+use crate::run_options::Run;
+use crate::test_build::{Artifacts, build, cargo_program};
+use crate::test_run::run_built;
+use crate::{committed_stubs, workspace_copy};
 
 /// `chapters/<package>/exercise/x.rs:3:9` → `exercise/x.rs:3:9`.
 fn in_package<'a>(at: &'a str, package: &str) -> &'a str {
@@ -121,7 +123,7 @@ pub fn check_others(
             if names.len() == 1 { "" } else { "s" },
         );
     }
-    let cargo = check::cargo_program();
+    let cargo = cargo_program();
     loop {
         let dir = copy.join("chapters").join(chapter.package);
         for (exercise, _) in &blamed {
@@ -129,7 +131,7 @@ pub fn check_others(
             std::fs::write(&path, stubs.text(chapter, exercise))
                 .map_err(|e| Error::io(&path, e))?;
         }
-        match check::build(
+        match build(
             &cargo,
             &copy,
             chapter.package,
@@ -137,7 +139,7 @@ pub fn check_others(
             Artifacts::OwnPackage(root),
         )? {
             Ok(built) => {
-                let mut report = check::run_built(&copy, chapter, run, built);
+                let mut report = run_built(&copy, chapter, run, built);
                 for (exercise, verdict) in &mut report.exercises {
                     if let Some((_, message)) =
                         blamed.iter().find(|(e, _)| e == exercise)
@@ -227,7 +229,7 @@ fn link_all_but(
         let name = entry.file_name().unwrap_or_default();
         let to = chapters.join(name);
         if name == chapter.package {
-            crate::workspace_copy::copy_sources(&entry, &to, &[])?;
+            workspace_copy::copy_sources(&entry, &to, &[])?;
         } else {
             link(&entry, &to)?;
         }
@@ -238,11 +240,9 @@ fn link_all_but(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::check::CompileError;
+    use raystep_check::verdicts::CompileError;
 
-    fn names(list: &[&str]) -> Vec<String> {
-        list.iter().map(|s| s.to_string()).collect()
-    }
+    use crate::test_files::names;
 
     #[test]
     fn compiler_errors_blame_the_file_they_are_in() {

@@ -5,7 +5,9 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use crate::chapters::{CHAPTERS, find};
-use crate::{Error, shown, workspace};
+use crate::error::Error;
+use crate::shown_path::{relative, shown};
+use crate::workspace;
 use raystep_figure::{Chapter, Format};
 
 /// What `raystep figures` was asked to do.
@@ -34,7 +36,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     };
     let out = match &options.out {
         Some(out) => out.clone(),
-        None => crate::relative(&default_out(&workspace::root())),
+        None => relative(&default_out(&workspace::root())),
     };
     if options.check {
         check(&chapters, &out, options.format)

@@ -24,12 +24,15 @@ use std::time::Duration;
 use raystep_figure::Chapter;
 use serde::Serialize;
 
-use crate::check::{self, CargoFailure, Run};
+use raystep_check::verdicts::{CargoFailure, advice, changed_snapshots};
+
 use crate::committed_stubs::{self, Stubs};
 use crate::compile_isolation::{blamed_files, compile_message};
+use crate::error::Error;
+use crate::run_options::Run;
+use crate::shown_path::{relative, shown};
 use crate::{
-    Error, atomic_file, held_out, shown, snapshot_changes, submission_rules,
-    workspace, workspace_copy,
+    atomic_file, check, held_out, submission_rules, workspace, workspace_copy,
 };
 
 /// What `raystep grade` was asked to do.
@@ -108,10 +111,8 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     if let Some(note) = stubs.note() {
         eprintln!("{note}");
     }
-    let changed = snapshot_changes::changed_snapshots(&instructor);
-    for line in
-        snapshot_changes::advice(&changed, &crate::relative(&instructor))
-    {
+    let changed = changed_snapshots(&instructor);
+    for line in advice(&changed, &relative(&instructor)) {
         eprintln!("{line}");
     }
 
@@ -138,7 +139,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         eprintln!(
             "note: {} has no held-out cases (examples/{}.rs): only its tests judge",
             chapter.package,
-            check::held_out_name(chapter)
+            held_out::held_out_name(chapter)
         );
     }
     let seed = options.seed.unwrap_or_else(held_out::new_seed);
@@ -574,26 +575,18 @@ fn link_shared(root: &Path, scratch: &Path) {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn names(list: &[&str]) -> Vec<String> {
-        list.iter().map(|s| s.to_string()).collect()
-    }
+    use crate::test_files::{folder_with, names};
 
     #[test]
     fn exercise_files_are_taken_from_either_place() {
-        let dir = tempfile::tempdir().unwrap();
-        let student = dir.path();
-        for file in [
+        let dir = folder_with(&[
             "exercise/ray_plane.rs",
             "ray_plane.rs",
             "inside_polygon.rs",
             "notes.txt",
             "exercise/other.rs",
-        ] {
-            let path = student.join(file);
-            fs::create_dir_all(path.parent().unwrap()).unwrap();
-            fs::write(path, "").unwrap();
-        }
+        ]);
+        let student = dir.path();
         let found = submission(
             student,
             &names(&["ray_plane", "inside_polygon", "missing"]),

@@ -20,8 +20,16 @@ use std::time::Duration;
 use raystep_check::held_out::Verdict;
 use raystep_figure::Chapter;
 
-use crate::Error;
-use crate::check::{self, Exit, Ran, run_with_limit};
+use crate::cargo_artifacts::examples;
+use crate::error::Error;
+use crate::limited_process::{Exit, Ran, describe_status, run_with_limit};
+use crate::test_build::cargo_program;
+
+/// The name of a chapter's held-out program: `examples/ch01_held_out.rs`
+/// (see `raystep_check::held_out`).
+pub fn held_out_name(chapter: &Chapter) -> String {
+    format!("{}_held_out", chapter.id)
+}
 
 /// How long the judge (the reference) may take.
 const JUDGE_LIMIT: Duration = Duration::from_secs(120);
@@ -51,7 +59,7 @@ pub fn build_reference(
     target_dir: Option<&Path>,
     keep: &Path,
 ) -> Result<Option<PathBuf>, Error> {
-    let name = check::held_out_name(chapter);
+    let name = held_out_name(chapter);
     let source = root
         .join("chapters")
         .join(chapter.package)
@@ -60,7 +68,7 @@ pub fn build_reference(
     if !source.is_file() {
         return Ok(None);
     }
-    let cargo = check::cargo_program();
+    let cargo = cargo_program();
     let mut command = Command::new(&cargo);
     command
         .current_dir(root)
@@ -85,7 +93,7 @@ pub fn build_reference(
         source,
     })?;
     let stdout = String::from_utf8_lossy(&out.stdout);
-    let built = check::examples(&stdout)
+    let built = examples(&stdout)
         .into_iter()
         .find(|(n, _)| *n == name)
         .map(|(_, path)| path);
@@ -93,7 +101,7 @@ pub fn build_reference(
         let stderr = String::from_utf8_lossy(&out.stderr);
         return Err(Error::Usage(format!(
             "the reference's held-out program ({}) does not build: {}",
-            crate::relative(&source).display(),
+            crate::shown_path::relative(&source).display(),
             stderr
                 .lines()
                 .find(|l| l.starts_with("error"))
@@ -146,7 +154,7 @@ pub fn judge(
             )),
             Exit::Status(status) if !status.success() => Some(format!(
                 "the held-out program stopped ({})",
-                check::describe_status(*status)
+                describe_status(*status)
             )),
             Exit::Status(_) => None,
         };

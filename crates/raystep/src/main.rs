@@ -16,32 +16,44 @@
 mod atomic_file;
 mod bench;
 mod book;
+mod cargo_artifacts;
 mod chapters;
 mod check;
 mod committed_stubs;
 mod compile_isolation;
+mod error;
 mod figures;
+mod git;
 mod grade;
 mod held_out;
+mod limited_process;
 mod measure;
+mod process_group;
+mod reference_module;
 mod render;
 mod report_formats;
-mod snapshot_changes;
-mod snapshot_diff;
-mod snapshot_table;
+mod run_options;
+mod separate_artifacts;
+mod shown_path;
 mod stability;
 mod student_edition;
 mod submission_rules;
+mod test_build;
+#[cfg(test)]
+mod test_files;
+mod test_run;
 mod workspace;
 mod workspace_copy;
 
 use std::io::{self, IsTerminal};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
 
 use clap::{Parser, Subcommand, ValueEnum};
-use raystep_stability::Budget;
+
+// The commands' error, at the crate root for `bench.rs`.
+use error::Error;
 
 /// raystep: a lecture on ray tracing in Rust.
 #[derive(Debug, Parser)]
@@ -88,62 +100,16 @@ enum Command {
         check: bool,
     },
     /// Time the renders behind the charts (slow) and write their CSV beside the figures.
-    Measure {
-        /// Timing samples per data point; the median is kept.
-        #[arg(long, default_value_t = 11)]
-        repeats: usize,
-        /// Only this chapter: `05`, `5` or `ch05`.
-        #[arg(long, value_name = "CHAPTER")]
-        chapter: Option<String>,
-        /// The folder that holds one folder per chapter [default: <workspace>/book/src/figures].
-        #[arg(long, value_name = "DIR")]
-        out: Option<PathBuf>,
-    },
+    Measure(measure::Options),
     /// Run the stability catalogue: every case where a method is known to
     /// fail (parallel rays, shared edges, grazing rays, self-intersection,
     /// huge coordinates, NaN, malformed inputs, …) against every method,
     /// counted, as one table. Slow at the full count (10⁶ rays per
     /// accelerator case); exits with failure where a method fails a case
     /// it is built to survive.
-    Stability {
-        /// Rays per accelerator case (and per cheap primitive case).
-        #[arg(long, value_name = "N", default_value_t = Budget::FULL.rays)]
-        rays: usize,
-        /// Generated inputs per input case.
-        #[arg(long, value_name = "N", default_value_t = Budget::FULL.inputs)]
-        inputs: usize,
-        /// Also write the rows as JSON to FILE.
-        #[arg(long, value_name = "FILE")]
-        json: Option<PathBuf>,
-        /// Also write the book's Markdown table to FILE.
-        #[arg(long, value_name = "FILE")]
-        markdown: Option<PathBuf>,
-    },
+    Stability(stability::Options),
     /// Render a scene file (TOML) to a PNG.
-    Render {
-        /// The scene file, e.g. chapters/ch03-illumination/scenes/spheres.toml.
-        scene: PathBuf,
-        /// The PNG to write [default: <scene name>.png in the current folder].
-        #[arg(long, value_name = "FILE.png")]
-        out: Option<PathBuf>,
-        /// Image size, overriding the scene's, e.g. 640x360.
-        #[arg(long, value_name = "WxH")]
-        size: Option<String>,
-        /// Worker threads [default: one per core]; the image is the same for any number.
-        #[arg(long, value_name = "N")]
-        threads: Option<usize>,
-        /// Render with this chapter's tracer [default: the chapter folder holding the scene,
-        /// else the latest].
-        #[arg(long, value_name = "CHAPTER")]
-        chapter: Option<String>,
-        /// What searches the objects for each ray: the lecture's loop over
-        /// every object (`brute`), chapter 8's bounding volume hierarchy
-        /// (`bvh`, binned SAH), chapter 9's uniform grid (`grid`), chapter
-        /// 10's kd-tree (`kdtree`, SAH) or chapter 10's rule for which of
-        /// them a scene needs (`auto`); the image is the same.
-        #[arg(long, value_enum, default_value_t = render::Accel::Brute)]
-        accel: render::Accel,
-    },
+    Render(render::Options),
     /// Time chapter 8's hierarchies, chapter 9's grid and chapter 10's
     /// kd-tree on a triangle mesh (build, trace, the work per ray), beside
     /// obvhs and bvh with `--peers`.
@@ -183,20 +149,10 @@ enum Command {
               value_parser = clap::value_parser!(u16).range(1..=100))]
         rounds: u16,
         /// Our builders, comma-separated.
-        #[arg(
-            long,
-            value_enum,
-            value_delimiter = ',',
-            default_value = "sah16"
-        )]
+        #[arg(long, value_delimiter = ',', default_value = "sah16")]
         builders: Vec<bench::BuilderArg>,
         /// Our node precisions, comma-separated (each builder with each).
-        #[arg(
-            long,
-            value_enum,
-            value_delimiter = ',',
-            default_value = "f32,f64"
-        )]
+        #[arg(long, value_delimiter = ',', default_value = "f32,f64")]
         precision: Vec<bench::PrecisionArg>,
         /// What to run of ours, comma-separated: chapter 8's hierarchies
         /// (`bvh`: each of --builders in each --precision), chapter 9's
@@ -205,7 +161,7 @@ enum Command {
         /// from events, each --kd-clip; its "nodes" are the nodes a ray
         /// reaches) and the appendix's fast hierarchies (`fast`: each
         /// --fast step).
-        #[arg(long, value_enum, value_delimiter = ',', default_value = "bvh")]
+        #[arg(long, value_delimiter = ',', default_value = "bvh")]
         accel: Vec<bench::AccelArg>,
         /// The grid's cells along the longest axis [default: the rule,
         /// 3·∛N for N triangles].
@@ -214,22 +170,12 @@ enum Command {
         grid_cells: Option<u16>,
         /// How the grid lists triangles in cells, comma-separated: by
         /// their bounding boxes, or exactly (the triangle–box test).
-        #[arg(
-            long,
-            value_enum,
-            value_delimiter = ',',
-            default_value = "exact"
-        )]
+        #[arg(long, value_delimiter = ',', default_value = "exact")]
         grid_fill: Vec<bench::FillArg>,
         /// How the kd-tree's builder weighs a triangle in a node,
         /// comma-separated: by its bounding box cut to the node, or by the
         /// triangle clipped to the node (`triangles`: perfect splits).
-        #[arg(
-            long,
-            value_enum,
-            value_delimiter = ',',
-            default_value = "boxes"
-        )]
+        #[arg(long, value_delimiter = ',', default_value = "boxes")]
         kd_clip: Vec<bench::ClipArg>,
         /// The appendix's steps to run with `--accel fast`,
         /// comma-separated (all of them by default).
@@ -285,7 +231,7 @@ enum Command {
         /// Kill a test binary still running after this many seconds; its
         /// exercise is `timed out`.
         #[arg(long, value_name = "SECS", value_parser = seconds,
-              default_value_t = check::DEFAULT_TIMEOUT_SECS as f64)]
+              default_value_t = run_options::DEFAULT_TIMEOUT_SECS as f64)]
         timeout: f64,
         /// Do not echo cargo's progress on stderr.
         #[arg(long, short)]
@@ -333,7 +279,7 @@ enum Command {
         /// Kill a test binary still running after this many seconds; its
         /// exercise is `timed out`.
         #[arg(long, value_name = "SECS", value_parser = seconds,
-              default_value_t = check::DEFAULT_TIMEOUT_SECS as f64)]
+              default_value_t = run_options::DEFAULT_TIMEOUT_SECS as f64)]
         timeout: f64,
         /// Build in this target directory, kept for the next run [env:
         /// RAYSTEP_CHECK_TARGET_DIR; default: one inside the scratch copy,
@@ -397,64 +343,6 @@ fn check_target_dir(arg: Option<PathBuf>) -> Option<PathBuf> {
     .map(|dir| std::path::absolute(&dir).unwrap_or(dir))
 }
 
-/// Everything that stops a command; shown as one line on stderr.
-#[derive(Debug, thiserror::Error)]
-pub enum Error {
-    /// The chapter argument names no chapter.
-    #[error("{wanted}: no such chapter; chapters are {known}")]
-    NoSuchChapter {
-        /// The normalised argument, `ch99`.
-        wanted: String,
-        /// `ch01, ch02`.
-        known: String,
-    },
-    /// A file or folder could not be read or written.
-    #[error("{}: {source}", shown(path))]
-    Io {
-        /// The file or folder.
-        path: PathBuf,
-        /// What went wrong.
-        source: io::Error,
-    },
-    /// The figure kit failed (its message names the path).
-    #[error(transparent)]
-    Figure(#[from] raystep_figure::FigureError),
-    /// A bad argument or input file; the message names it.
-    #[error("{0}")]
-    Usage(String),
-    /// `cargo` could not be started.
-    #[error("cannot run `{program}`: {source}")]
-    Spawn {
-        /// The cargo program.
-        program: String,
-        /// What went wrong.
-        source: io::Error,
-    },
-}
-
-impl Error {
-    fn io(path: &Path, source: io::Error) -> Error {
-        Error::Io {
-            path: path.to_path_buf(),
-            source,
-        }
-    }
-}
-
-/// A path as the user would type it: relative to the current directory when inside it.
-pub fn relative(path: &Path) -> PathBuf {
-    std::env::current_dir()
-        .ok()
-        .and_then(|cwd| path.strip_prefix(cwd).ok().map(Path::to_path_buf))
-        .filter(|rel| !rel.as_os_str().is_empty())
-        .unwrap_or_else(|| path.to_path_buf())
-}
-
-/// [`relative`], for messages.
-pub fn shown(path: &Path) -> String {
-    relative(path).display().to_string()
-}
-
 /// clap's usage error on one line: `error: invalid value 'gif' for '--format <FORMAT>'; [possible values: svg, png, both]`.
 fn one_line(message: &str) -> String {
     let mut line = String::new();
@@ -507,41 +395,9 @@ fn main() -> ExitCode {
             format: format.into(),
             check,
         }),
-        Command::Measure {
-            repeats,
-            chapter,
-            out,
-        } => measure::run(&measure::Options {
-            repeats,
-            chapter,
-            out,
-        }),
-        Command::Stability {
-            rays,
-            inputs,
-            json,
-            markdown,
-        } => stability::run(&stability::Options {
-            rays,
-            inputs,
-            json,
-            markdown,
-        }),
-        Command::Render {
-            scene,
-            out,
-            size,
-            threads,
-            chapter,
-            accel,
-        } => render::run(&render::Options {
-            scene,
-            out,
-            size,
-            threads,
-            chapter,
-            accel,
-        }),
+        Command::Measure(options) => measure::run(&options),
+        Command::Stability(options) => stability::run(&options),
+        Command::Render(options) => render::run(&options),
         Command::Bench {
             mesh,
             rays,
@@ -597,7 +453,7 @@ fn main() -> ExitCode {
                     Vec::new()
                 },
                 fast: if accel.contains(&bench::AccelArg::Fast) {
-                    fast.iter().map(|f| f.step()).collect()
+                    fast.clone()
                 } else {
                     Vec::new()
                 },

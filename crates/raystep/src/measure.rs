@@ -9,17 +9,21 @@ use std::process::ExitCode;
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::chapters::{CHAPTERS, find};
-use crate::{Error, shown};
+use crate::error::Error;
+use crate::shown_path::shown;
 use raystep_figure::{Chapter, Measurement};
 
-/// What `raystep measure` was asked to do.
-#[derive(Debug)]
+/// What `raystep measure` was asked to do: its command line.
+#[derive(Debug, clap::Args)]
 pub struct Options {
-    /// Renders timed per data point (the median is kept).
+    /// Timing samples per data point; the median is kept.
+    #[arg(long, default_value_t = 11)]
     pub repeats: usize,
-    /// One chapter (`05`, `ch05`, …) or every chapter with a chart.
+    /// Only this chapter: `05`, `5` or `ch05`.
+    #[arg(long, value_name = "CHAPTER")]
     pub chapter: Option<String>,
-    /// The folder holding one folder per chapter [default: book/src/figures].
+    /// The folder that holds one folder per chapter [default: <workspace>/book/src/figures].
+    #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
 }
 

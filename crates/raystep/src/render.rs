@@ -9,27 +9,38 @@ use raystep_scene::MAX_SIZE;
 use raystep_world::Accelerate;
 
 use crate::chapters::{CHAPTERS, find};
-use crate::{Error, shown};
+use crate::error::Error;
+use crate::shown_path::shown;
 use raystep_figure::{Chapter, Renderer};
 
 /// The renderer of a scene outside any chapter folder: the most complete
 /// tracer.
 const DEFAULT_RENDERER: &str = "ch06";
 
-/// What `raystep render` was asked to do.
-#[derive(Debug)]
+/// What `raystep render` was asked to do: its command line.
+#[derive(Debug, clap::Args)]
 pub struct Options {
-    /// The scene file.
+    /// The scene file, e.g. chapters/ch03-illumination/scenes/spheres.toml.
     pub scene: PathBuf,
-    /// The PNG to write; `<scene name>.png` in the current folder by default.
+    /// The PNG to write [default: <scene name>.png in the current folder].
+    #[arg(long, value_name = "FILE.png")]
     pub out: Option<PathBuf>,
-    /// `WxH`, overriding the scene's image size.
+    /// Image size, overriding the scene's, e.g. 640x360.
+    #[arg(long, value_name = "WxH")]
     pub size: Option<String>,
-    /// Worker threads; all cores by default.
+    /// Worker threads [default: one per core]; the image is the same for any number.
+    #[arg(long, value_name = "N")]
     pub threads: Option<usize>,
-    /// The chapter whose renderer to use.
+    /// Render with this chapter's tracer [default: the chapter folder holding the scene,
+    /// else the latest].
+    #[arg(long, value_name = "CHAPTER")]
     pub chapter: Option<String>,
-    /// What searches the objects.
+    /// What searches the objects for each ray: the lecture's loop over
+    /// every object (`brute`), chapter 8's bounding volume hierarchy
+    /// (`bvh`, binned SAH), chapter 9's uniform grid (`grid`), chapter
+    /// 10's kd-tree (`kdtree`, SAH) or chapter 10's rule for which of
+    /// them a scene needs (`auto`); the image is the same.
+    #[arg(long, value_enum, default_value_t = Accel::Brute)]
     pub accel: Accel,
 }
 

@@ -1,17 +1,14 @@
 //! A check report for machines: JSON (`raystep check --json FILE`) and
 //! JUnit XML (`--junit FILE`, one test suite for the chapter, one test case
-//! per exercise and one for the other tests). Both files are written
-//! atomically.
+//! per exercise and one for the other tests), as text; `check` writes them.
 
 use std::io;
-use std::path::Path;
 
 use quick_xml::Writer;
 use quick_xml::events::{BytesDecl, BytesText, Event};
 use serde::Serialize;
 
-use crate::check::{Report, Verdict};
-use crate::{Error, atomic_file};
+use raystep_check::verdicts::{Report, Verdict, advice};
 
 /// Which chapter a report is about, and how it was run.
 #[derive(Debug, Clone, Copy)]
@@ -140,15 +137,6 @@ pub fn json(heading: &Heading, report: &Report) -> String {
     text
 }
 
-/// Writes [`json`] to `path`, atomically.
-pub fn write_json(
-    path: &Path,
-    heading: &Heading,
-    report: &Report,
-) -> Result<(), Error> {
-    atomic_file::write(path, json(heading, report).as_bytes())
-}
-
 /// One JUnit test case: its name and, unless it passed, the failure's type
 /// (the verdict's kind) and message (the verdict as `check` prints it).
 struct Case {
@@ -271,10 +259,7 @@ fn suite_content(
             }
         }
     }
-    let advice = crate::snapshot_changes::advice(
-        &report.changed_snapshots,
-        &report.package_dir,
-    );
+    let advice = advice(&report.changed_snapshots, &report.package_dir);
     if !advice.is_empty() {
         writer.create_element("system-err").write_text_content(
             BytesText::new(&xml_text(&advice.join("\n"))),
@@ -298,20 +283,12 @@ fn xml_text(text: &str) -> String {
         .collect()
 }
 
-/// Writes [`junit`] to `path`, atomically.
-pub fn write_junit(
-    path: &Path,
-    heading: &Heading,
-    report: &Report,
-) -> Result<(), Error> {
-    atomic_file::write(path, junit(heading, report).as_bytes())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::check::{BuildFailure, CargoFailure, CompileError};
-    use crate::snapshot_changes::{Change, ChangedSnapshot};
+    use raystep_check::verdicts::{
+        BuildFailure, CargoFailure, Change, ChangedSnapshot, CompileError,
+    };
 
     const HEADING: Heading = Heading {
         chapter: "ch02",

@@ -11,17 +11,23 @@ use std::process::ExitCode;
 use indicatif::{ProgressBar, ProgressStyle};
 use raystep_stability::{Budget, Expect, catalogue, run_catalogue, table};
 
-use crate::{Error, atomic_file};
+use crate::atomic_file;
+use crate::error::Error;
 
-/// What `raystep stability` was asked.
+/// What `raystep stability` was asked: its command line.
+#[derive(Debug, clap::Args)]
 pub struct Options {
-    /// Rays per accelerator case (`--rays`).
+    /// Rays per accelerator case (and per cheap primitive case).
+    #[arg(long, value_name = "N", default_value_t = Budget::FULL.rays)]
     pub rays: usize,
-    /// Inputs per input case (`--inputs`).
+    /// Generated inputs per input case.
+    #[arg(long, value_name = "N", default_value_t = Budget::FULL.inputs)]
     pub inputs: usize,
-    /// Where to write the rows as JSON (`--json`).
+    /// Also write the rows as JSON to FILE.
+    #[arg(long, value_name = "FILE")]
     pub json: Option<PathBuf>,
-    /// Where to write the book's Markdown table (`--markdown`).
+    /// Also write the book's Markdown table to FILE.
+    #[arg(long, value_name = "FILE")]
     pub markdown: Option<PathBuf>,
 }
 

@@ -19,12 +19,14 @@
 use std::fs;
 use std::io;
 use std::path::{Path, PathBuf};
-use std::process::{Command, ExitCode, Stdio};
+use std::process::ExitCode;
 
 use raystep_figure::Chapter;
 
 use crate::committed_stubs::{self, Stubs};
-use crate::{Error, chapters, shown, workspace, workspace_copy};
+use crate::error::Error;
+use crate::shown_path::shown;
+use crate::{chapters, git, workspace, workspace_copy};
 
 /// Runs `raystep student-edition OUT`.
 pub fn run(out: &Path) -> Result<ExitCode, Error> {
@@ -134,8 +136,8 @@ fn refuse_non_empty(out: &Path) -> Result<(), Error> {
 /// clear of ambiguous ones.
 fn drop_held_out(copy: &Path, chapter: &Chapter) -> Result<(), Error> {
     let examples = copy.join("chapters").join(chapter.package).join("examples");
-    let program =
-        examples.join(format!("{}.rs", crate::check::held_out_name(chapter)));
+    let program = examples
+        .join(format!("{}.rs", crate::held_out::held_out_name(chapter)));
     if program.exists() {
         fs::remove_file(&program).map_err(|e| Error::io(&program, e))?;
     }
@@ -255,34 +257,22 @@ fn chain_exercise_feature(
 /// repository if `git` is not installed.
 fn commit(dir: &Path) -> Result<Git, Error> {
     let git = |args: &[&str]| -> Result<Option<()>, Error> {
-        let result = Command::new("git")
-            .args([
-                "-c",
-                "user.name=raystep",
-                "-c",
-                "user.email=raystep@localhost",
-                "-c",
-                "commit.gpgsign=false",
-                "-c",
-                "init.defaultBranch=main",
-                "-c",
-                "core.autocrlf=false",
-            ])
-            .args(args)
-            .current_dir(dir)
-            .env_remove("GIT_DIR")
-            .env_remove("GIT_WORK_TREE")
-            .env_remove("GIT_INDEX_FILE")
-            .stdin(Stdio::null())
-            .output();
-        match result {
-            Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(None),
-            Err(e) => Err(Error::Spawn {
-                program: "git".to_string(),
-                source: e,
-            }),
-            Ok(out) if out.status.success() => Ok(Some(())),
-            Ok(out) => Err(Error::Usage(format!(
+        let config = [
+            "-c",
+            "user.name=raystep",
+            "-c",
+            "user.email=raystep@localhost",
+            "-c",
+            "commit.gpgsign=false",
+            "-c",
+            "init.defaultBranch=main",
+            "-c",
+            "core.autocrlf=false",
+        ];
+        match git::git(dir, &[&config[..], args].concat())? {
+            None => Ok(None),
+            Some(out) if out.status.success() => Ok(Some(())),
+            Some(out) => Err(Error::Usage(format!(
                 "git {} in {}: {}",
                 args.join(" "),
                 dir.display(),

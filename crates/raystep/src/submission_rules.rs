@@ -520,8 +520,11 @@ mod inline { pub fn f() {} }
         for chapter in crate::chapters::CHAPTERS {
             let dir = root.join("chapters").join(chapter.package);
             for exercise in chapter.exercises {
-                for folder in ["exercise", "src"] {
-                    let path = dir.join(folder).join(format!("{exercise}.rs"));
+                let stub = dir.join("exercise").join(format!("{exercise}.rs"));
+                let module =
+                    crate::reference_module::reference_module(&dir, exercise)
+                        .unwrap();
+                for path in [stub, module] {
                     let text = std::fs::read_to_string(&path).unwrap();
                     if let Some(refusal) = first_refusal(&text) {
                         panic!(

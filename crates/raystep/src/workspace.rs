@@ -3,7 +3,7 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use crate::Error;
+use crate::error::Error;
 
 /// The workspace root: the nearest directory, from the current one upwards,
 /// whose `Cargo.toml` has a `[workspace]` table; otherwise the workspace this

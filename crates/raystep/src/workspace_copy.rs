@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use walkdir::WalkDir;
 
-use crate::Error;
+use crate::error::Error;
 
 /// Folders never copied, wherever they are: cargo's build output, git's
 /// folder (a worktree has a `.git` file instead), test output.
@@ -124,12 +124,11 @@ pub fn replace_folder(from: &Path, to: &Path) -> Result<(), Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_files::folder_with;
 
     #[test]
     fn build_output_and_git_are_left_out() {
-        let from = tempfile::tempdir().unwrap();
-        let root = from.path();
-        for file in [
+        let from = folder_with(&[
             "Cargo.toml",
             "book/src/ch01.md",
             "book/book/index.html",
@@ -140,11 +139,8 @@ mod tests {
             "chapters/ch01/target/y",
             "out/figure.svg",
             "skip-me/file",
-        ] {
-            let path = root.join(file);
-            fs::create_dir_all(path.parent().unwrap()).unwrap();
-            fs::write(&path, file).unwrap();
-        }
+        ]);
+        let root = from.path();
         let to = tempfile::tempdir().unwrap();
         let copied =
             copy_sources(root, to.path(), &[root.join("skip-me")]).unwrap();

@@ -4,23 +4,9 @@
 
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
-fn raystep(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_raystep"))
-        .args(args)
-        .output()
-        .expect("raystep runs")
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("raystep-bench")
-        .join(name);
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).unwrap();
-    dir
-}
+mod common;
+use common::{raystep, read_json, succeeds, text};
 
 /// A unit square in the plane z = 0, as two triangles: 0 below the
 /// diagonal x = y, 1 above it.
@@ -34,16 +20,47 @@ fn ray_file(rays: &[[f32; 6]]) -> Vec<u8> {
         .collect()
 }
 
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
+/// A fresh scratch folder for one test holding [`SQUARE`] as
+/// `square.obj`: (the folder, the mesh).
+fn with_square(name: &str) -> (PathBuf, PathBuf) {
+    let dir = common::scratch("raystep-bench", name);
+    let obj = dir.join("square.obj");
+    fs::write(&obj, SQUARE).unwrap();
+    (dir, obj)
+}
+
+/// The methods of a JSON report, by name.
+fn methods(report: &serde_json::Value) -> Vec<&str> {
+    report["methods"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|m| m["method"].as_str().unwrap())
+        .collect()
+}
+
+/// Every method of a JSON report agrees with the first on every set.
+fn assert_agree(report: &serde_json::Value) {
+    for method in report["methods"].as_array().unwrap() {
+        for set in method["sets"].as_array().unwrap() {
+            assert_eq!(set["disagreements"], 0, "{method}");
+        }
+    }
+}
+
+/// Runs `raystep bench <obj> --rounds 1 <args>`, which must succeed;
+/// returns its table.
+fn bench(obj: &Path, args: &[&str]) -> String {
+    let mut all = vec!["bench", obj.to_str().unwrap(), "--rounds", "1"];
+    all.extend_from_slice(args);
+    succeeds(&all)
 }
 
 #[test]
 fn a_ray_file_run_writes_the_report_and_every_hit() {
-    let dir = scratch("good");
-    let (obj, rays) = (dir.join("square.obj"), dir.join("rays.bin"));
+    let (dir, obj) = with_square("good");
+    let rays = dir.join("rays.bin");
     let (json, hits) = (dir.join("report.json"), dir.join("hits.bin"));
-    fs::write(&obj, SQUARE).unwrap();
     // Down the z axis from z = 2: onto triangle 0, onto triangle 1, and
     // beside the square.
     fs::write(
@@ -55,31 +72,27 @@ fn a_ray_file_run_writes_the_report_and_every_hit() {
         ]),
     )
     .unwrap();
-    let run = raystep(&[
-        "bench",
-        obj.to_str().unwrap(),
-        "--rays",
-        rays.to_str().unwrap(),
-        "--rounds",
-        "1",
-        "--builders",
-        "median,sah4",
-        "--json",
-        json.to_str().unwrap(),
-        "--write-hits",
-        hits.to_str().unwrap(),
-    ]);
-    assert!(run.status.success(), "{}", text(&run.stderr));
+    let table = bench(
+        &obj,
+        &[
+            "--rays",
+            rays.to_str().unwrap(),
+            "--builders",
+            "median,sah4",
+            "--json",
+            json.to_str().unwrap(),
+            "--write-hits",
+            hits.to_str().unwrap(),
+        ],
+    );
     // The table names every method and counts no disagreement.
-    let table = text(&run.stdout);
     for method in ["median, f32", "median, f64", "SAH, 4 bins, f32"] {
         assert!(table.contains(method), "{method} missing:\n{table}");
     }
     assert!(table.contains("3 (Closest hit)"), "{table}");
     assert!(table.contains("0 disagreements"), "{table}");
     // The JSON report: the mesh, the set, four methods.
-    let report: serde_json::Value =
-        serde_json::from_str(&fs::read_to_string(&json).unwrap()).unwrap();
+    let report = read_json(&json);
     assert_eq!(report["triangles"], 2);
     assert_eq!(report["sets"][0]["rays"], 3);
     assert_eq!(report["sets"][0]["brute_force_disagreements"], 0);
@@ -102,26 +115,31 @@ fn a_ray_file_run_writes_the_report_and_every_hit() {
 
 #[test]
 fn generated_ray_sets_are_reported_by_name() {
-    let dir = scratch("generated");
-    let obj = dir.join("square.obj");
-    fs::write(&obj, SQUARE).unwrap();
-    let run = raystep(&[
-        "bench",
-        obj.to_str().unwrap(),
-        "--size",
-        "8",
-        "--incoherent",
-        "100",
-        "--rounds",
-        "1",
-        "--precision",
-        "f32",
-    ]);
-    assert!(run.status.success(), "{}", text(&run.stderr));
-    let table = text(&run.stdout);
+    let (_, obj) = with_square("generated");
+    let table = bench(
+        &obj,
+        &["--size", "8", "--incoherent", "100", "--precision", "f32"],
+    );
     for set in ["primary rays: 64", "shadow rays:", "incoherent rays: 100"] {
         assert!(table.contains(set), "{set} missing:\n{table}");
     }
+}
+
+/// The arguments of a run on small generated sets in `f64`, beside
+/// chapter 8's hierarchy (`--accel bvh,<accel>`), its report to `json`.
+fn beside_the_hierarchy<'a>(accel: &'a str, json: &'a Path) -> Vec<&'a str> {
+    vec![
+        "--size",
+        "16",
+        "--incoherent",
+        "200",
+        "--precision",
+        "f64",
+        "--accel",
+        accel,
+        "--json",
+        json.to_str().unwrap(),
+    ]
 }
 
 /// `--accel bvh,grid`: chapter 9's grid runs beside the hierarchy, each
@@ -129,69 +147,30 @@ fn generated_ray_sets_are_reported_by_name() {
 /// same rays, with the same answers.
 #[test]
 fn the_grid_runs_beside_the_hierarchy() {
-    let dir = scratch("grid");
-    let (obj, json) = (dir.join("square.obj"), dir.join("report.json"));
-    fs::write(&obj, SQUARE).unwrap();
+    let (dir, obj) = with_square("grid");
+    let json = dir.join("report.json");
     for (cells, name) in [(None, "rule"), (Some("7"), "7 cells")] {
-        let mut args = vec![
-            "bench",
-            obj.to_str().unwrap(),
-            "--size",
-            "16",
-            "--incoherent",
-            "200",
-            "--rounds",
-            "1",
-            "--precision",
-            "f64",
-            "--accel",
-            "bvh,grid",
-            "--grid-fill",
-            "boxes,exact",
-            "--json",
-            json.to_str().unwrap(),
-        ];
+        let mut args = beside_the_hierarchy("bvh,grid", &json);
+        args.extend(["--grid-fill", "boxes,exact"]);
         if let Some(n) = cells {
             args.extend(["--grid-cells", n]);
         }
-        let run = raystep(&args);
-        assert!(run.status.success(), "{}", text(&run.stderr));
-        let report: serde_json::Value =
-            serde_json::from_str(&fs::read_to_string(&json).unwrap()).unwrap();
-        let methods: Vec<&str> = report["methods"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|m| m["method"].as_str().unwrap())
-            .collect();
+        bench(&obj, &args);
+        let report = read_json(&json);
         assert_eq!(
-            methods,
+            methods(&report),
             [
                 "ours: SAH, 16 bins, f64".to_string(),
                 format!("grid: {name}, boxes"),
                 format!("grid: {name}, exact"),
             ]
         );
-        for method in report["methods"].as_array().unwrap() {
-            for set in method["sets"].as_array().unwrap() {
-                assert_eq!(set["disagreements"], 0, "{method}");
-            }
-        }
+        assert_agree(&report);
     }
     fs::remove_file(&json).unwrap();
     // only the grid; a structure we do not have is refused by name
-    let run = raystep(&[
-        "bench",
-        obj.to_str().unwrap(),
-        "--size",
-        "4",
-        "--rounds",
-        "1",
-        "--accel",
-        "grid",
-    ]);
-    assert!(run.status.success(), "{}", text(&run.stderr));
-    assert!(!text(&run.stdout).contains("SAH"), "{}", text(&run.stdout));
+    let table = bench(&obj, &["--size", "4", "--accel", "grid"]);
+    assert!(!table.contains("SAH"), "{table}");
     refused(
         &dir,
         &[obj.to_str().unwrap(), "--accel", "octree"],
@@ -209,38 +188,14 @@ fn the_grid_runs_beside_the_hierarchy() {
 /// answers.
 #[test]
 fn the_kd_tree_runs_beside_the_hierarchy() {
-    let dir = scratch("kdtree");
-    let (obj, json) = (dir.join("square.obj"), dir.join("report.json"));
-    fs::write(&obj, SQUARE).unwrap();
-    let run = raystep(&[
-        "bench",
-        obj.to_str().unwrap(),
-        "--size",
-        "16",
-        "--incoherent",
-        "200",
-        "--rounds",
-        "1",
-        "--precision",
-        "f64",
-        "--accel",
-        "bvh,kdtree",
-        "--kd-clip",
-        "boxes,triangles",
-        "--json",
-        json.to_str().unwrap(),
-    ]);
-    assert!(run.status.success(), "{}", text(&run.stderr));
-    let report: serde_json::Value =
-        serde_json::from_str(&fs::read_to_string(&json).unwrap()).unwrap();
-    let methods: Vec<&str> = report["methods"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|m| m["method"].as_str().unwrap())
-        .collect();
+    let (dir, obj) = with_square("kdtree");
+    let json = dir.join("report.json");
+    let mut args = beside_the_hierarchy("bvh,kdtree", &json);
+    args.extend(["--kd-clip", "boxes,triangles"]);
+    bench(&obj, &args);
+    let report = read_json(&json);
     assert_eq!(
-        methods,
+        methods(&report),
         [
             "ours: SAH, 16 bins, f64",
             "kd-tree: SAH, events, boxes",
@@ -249,25 +204,12 @@ fn the_kd_tree_runs_beside_the_hierarchy() {
     );
     for method in report["methods"].as_array().unwrap() {
         assert_eq!(method["ours"], true, "{method}");
-        for set in method["sets"].as_array().unwrap() {
-            assert_eq!(set["disagreements"], 0, "{method}");
-        }
     }
+    assert_agree(&report);
     fs::remove_file(&json).unwrap();
     // only the kd-tree, clipped by boxes unless asked; a clip we do not
     // have is refused by name
-    let run = raystep(&[
-        "bench",
-        obj.to_str().unwrap(),
-        "--size",
-        "4",
-        "--rounds",
-        "1",
-        "--accel",
-        "kdtree",
-    ]);
-    assert!(run.status.success(), "{}", text(&run.stderr));
-    let table = text(&run.stdout);
+    let table = bench(&obj, &["--size", "4", "--accel", "kdtree"]);
     assert!(table.contains("kd-tree: SAH, events, boxes"), "{table}");
     assert!(!table.contains("ours:"), "{table}");
     assert!(!table.contains("perfect splits"), "{table}");
@@ -315,9 +257,7 @@ fn refused(dir: &Path, args: &[&str], names: &str) {
 
 #[test]
 fn bad_input_is_refused_by_name_and_writes_nothing() {
-    let dir = scratch("bad");
-    let obj = dir.join("square.obj");
-    fs::write(&obj, SQUARE).unwrap();
+    let (dir, obj) = with_square("bad");
     let obj = obj.to_str().unwrap();
     // A mesh that is not there, and one that does not parse.
     let missing = dir.join("missing.obj");

@@ -3,31 +3,17 @@
 use std::collections::BTreeMap;
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 use std::sync::OnceLock;
 
 use raystep_figure::{BOOK_COLUMN_PX, MIN_TEXT_PX};
 
-/// Runs the raystep binary with `args` and returns its output.
-fn raystep(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_raystep"))
-        .args(args)
-        .output()
-        .expect("raystep runs")
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
+mod common;
+use common::{fails_in_one_line, raystep, succeeds, text};
 
 /// A fresh, empty scratch folder for one test.
 fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("raystep-figures")
-        .join(name);
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).unwrap();
-    dir
+    common::scratch("raystep-figures", name)
 }
 
 /// Every file under `dir` with its bytes, by path relative to `dir`.
@@ -57,27 +43,27 @@ fn write_all(name: &str, chapter: Option<&str>) -> PathBuf {
     let dir = scratch(name);
     let mut args = vec!["figures", "--out", dir.to_str().unwrap()];
     args.extend(chapter.map(|c| ["--chapter", c]).into_iter().flatten());
-    let out = raystep(&args);
-    assert!(
-        out.status.success(),
-        "figures failed: {}",
-        text(&out.stderr)
-    );
+    succeeds(&args);
     dir
+}
+
+/// `raystep figures --check --chapter 01 --out <dir>`.
+fn check_chapter_01(dir: &Path) -> Output {
+    raystep(&[
+        "figures",
+        "--check",
+        "--chapter",
+        "01",
+        "--out",
+        dir.to_str().unwrap(),
+    ])
 }
 
 #[test]
 fn checking_an_empty_folder_reports_every_figure_missing() {
     let expected = files(&write_all("reference", Some("01"))).len();
     let empty = scratch("empty");
-    let out = raystep(&[
-        "figures",
-        "--check",
-        "--chapter",
-        "01",
-        "--out",
-        empty.to_str().unwrap(),
-    ]);
+    let out = check_chapter_01(&empty);
     let stdout = text(&out.stdout);
     if expected == 0 {
         // No chapter draws a figure yet: nothing can be missing.
@@ -116,14 +102,7 @@ fn a_changed_or_extra_figure_file_is_named() {
     if let Some(first) = &first {
         fs::write(chapter.join(first), b"changed").unwrap();
     }
-    let out = raystep(&[
-        "figures",
-        "--check",
-        "--chapter",
-        "01",
-        "--out",
-        dir.to_str().unwrap(),
-    ]);
+    let out = check_chapter_01(&dir);
     let stdout = text(&out.stdout);
     assert!(!out.status.success());
     assert!(stdout.contains("stray.svg"), "{stdout}");
@@ -228,9 +207,7 @@ fn writing_twice_gives_identical_files_that_check_clean() {
 #[test]
 fn one_chapter_only() {
     let dir = scratch("one");
-    let out =
-        raystep(&["figures", "--chapter", "1", "--out", dir.to_str().unwrap()]);
-    assert!(out.status.success(), "{}", text(&out.stderr));
+    succeeds(&["figures", "--chapter", "1", "--out", dir.to_str().unwrap()]);
     let folders: Vec<_> = fs::read_dir(&dir)
         .unwrap()
         .map(|e| e.unwrap().file_name())
@@ -245,17 +222,14 @@ fn an_unknown_chapter_is_one_clear_error() {
         &["figures", "--chapter", "99"],
         &["check", "ch99"],
     ] {
-        let out = raystep(args);
-        let stderr = text(&out.stderr);
-        assert!(!out.status.success(), "{args:?}");
         // one line, naming every chapter (the list grows with the lecture)
+        let stderr = fails_in_one_line(args);
         assert!(
             stderr.starts_with(
                 "error: ch99: no such chapter; chapters are ch01, ch02, ch03"
             ),
             "{args:?}: {stderr}"
         );
-        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
     }
 }
 
@@ -264,11 +238,11 @@ fn an_unwritable_folder_is_one_clear_error() {
     let dir = scratch("unwritable");
     let file = dir.join("a-file");
     fs::write(&file, "not a folder").unwrap();
-    let out =
-        raystep(&["figures", "--out", file.join("figures").to_str().unwrap()]);
-    let stderr = text(&out.stderr);
-    assert!(!out.status.success());
-    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    let stderr = fails_in_one_line(&[
+        "figures",
+        "--out",
+        file.join("figures").to_str().unwrap(),
+    ]);
     assert!(
         stderr.starts_with("error: ") && stderr.contains("a-file"),
         "{stderr}"
@@ -279,16 +253,13 @@ fn an_unwritable_folder_is_one_clear_error() {
 #[test]
 fn a_bad_format_is_refused() {
     let dir = scratch("format");
-    let out = raystep(&[
+    let stderr = fails_in_one_line(&[
         "figures",
         "--format",
         "gif",
         "--out",
         dir.to_str().unwrap(),
     ]);
-    assert!(!out.status.success());
-    let stderr = text(&out.stderr);
     assert!(stderr.contains("invalid value 'gif'"), "{stderr}");
-    assert_eq!(stderr.lines().count(), 1, "{stderr}");
     assert!(files(&dir).is_empty());
 }

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 mod common;
-use common::{outer_target, workspace};
+use common::{outer_target, read_json, workspace};
 
 const CHAPTER: &str = "chapters/ch01-implicit-lines-planes";
 
@@ -77,6 +77,17 @@ fn each_submission_gets_its_verdicts() {
     let submissions = root.join("submissions");
     let line = reference("line_through_points");
     let plane = reference("plane_through_points");
+    // Every student but two hands in the reference's plane and a line of
+    // their own, both in exercise/.
+    let with_plane = |student: &str, line: String| {
+        write_all(
+            &submissions.join(student),
+            &[
+                ("exercise/line_through_points.rs", line),
+                ("exercise/plane_through_points.rs", plane.clone()),
+            ],
+        );
+    };
     // right: the reference bodies, one in exercise/, one beside it.
     write_all(
         &submissions.join("right"),
@@ -86,27 +97,15 @@ fn each_submission_gets_its_verdicts() {
         ],
     );
     // wrong: the line's constant c with its minus sign dropped.
+    with_plane("wrong", edited(&line, "c = -normal", "c = normal"));
     write_all(
         &submissions.join("wrong"),
-        &[
-            (
-                "exercise/line_through_points.rs",
-                edited(&line, "c = -normal", "c = normal"),
-            ),
-            ("exercise/plane_through_points.rs", plane.clone()),
-            ("notes.txt", "my notes".to_string()),
-        ],
+        &[("notes.txt", "my notes".to_string())],
     );
     // looping: the line's eval never returns.
-    write_all(
-        &submissions.join("looping"),
-        &[
-            (
-                "exercise/line_through_points.rs",
-                edited(&line, "+ self.c", "+ { let c: f64 = loop {}; c }"),
-            ),
-            ("exercise/plane_through_points.rs", plane.clone()),
-        ],
+    with_plane(
+        "looping",
+        edited(&line, "+ self.c", "+ { let c: f64 = loop {}; c }"),
     );
     // missing: only the plane.
     write_all(
@@ -120,31 +119,16 @@ fn each_submission_gets_its_verdicts() {
         .canonicalize()
         .unwrap();
     // path: the reference module itself, by #[path].
-    write_all(
-        &submissions.join("path"),
-        &[
-            (
-                "exercise/line_through_points.rs",
-                "#[path = \"../src/line_through_points.rs\"]\nmod reference;\n\
-                 pub use reference::*;\n"
-                    .to_string(),
-            ),
-            ("exercise/plane_through_points.rs", plane.clone()),
-        ],
+    with_plane(
+        "path",
+        "#[path = \"../src/line_through_points.rs\"]\nmod reference;\n\
+             pub use reference::*;\n"
+            .to_string(),
     );
     // include: the instructor's reference by absolute path.
-    write_all(
-        &submissions.join("include"),
-        &[
-            (
-                "exercise/line_through_points.rs",
-                format!(
-                    "include!({:?});\n",
-                    instructor_line.display().to_string()
-                ),
-            ),
-            ("exercise/plane_through_points.rs", plane.clone()),
-        ],
+    with_plane(
+        "include",
+        format!("include!({:?});\n", instructor_line.display().to_string()),
     );
     // forger: on its first call, prints libtest's lines for every test of
     // the binary it runs in, then ends the process with success.
@@ -166,16 +150,7 @@ fn forge() -> ! {
     std::process::exit(0)
 }
 "#;
-    write_all(
-        &submissions.join("forger"),
-        &[
-            (
-                "exercise/line_through_points.rs",
-                format!("{FORGED_API}{forge}"),
-            ),
-            ("exercise/plane_through_points.rs", plane.clone()),
-        ],
-    );
+    with_plane("forger", format!("{FORGED_API}{forge}"));
     // quiet forger: the same lines with nothing the rules refuse (names
     // known in advance), then a crash by an endless recursion.
     let quiet = r#"
@@ -194,44 +169,20 @@ fn deeper(x: f64) -> f64 {
     deeper(x + 1.0) * x
 }
 "#;
-    write_all(
-        &submissions.join("quiet-forger"),
-        &[
-            (
-                "exercise/line_through_points.rs",
-                format!("{FORGED_API}{quiet}"),
-            ),
-            ("exercise/plane_through_points.rs", plane.clone()),
-        ],
-    );
+    with_plane("quiet-forger", format!("{FORGED_API}{quiet}"));
     // oracle: right on every input a test looks at (the snapshots' rows,
     // the property tests' ranges up to 10⁶ and the huge degenerate rows),
     // wrong between.
-    write_all(
-        &submissions.join("oracle"),
-        &[
-            (
-                "exercise/line_through_points.rs",
-                edited(
-                    &line,
-                    "-normal.dot(p0);",
-                    "-normal.dot(p0) * if (1e8..1e100).contains(&p0.abs().max_element()) { 1.0001 } else { 1.0 };",
-                ),
-            ),
-            ("exercise/plane_through_points.rs", plane.clone()),
-        ],
+    with_plane(
+        "oracle",
+        edited(
+            &line,
+            "-normal.dot(p0);",
+            "-normal.dot(p0) * if (1e8..1e100).contains(&p0.abs().max_element()) { 1.0001 } else { 1.0 };",
+        ),
     );
     // broken: the line's file does not compile.
-    write_all(
-        &submissions.join("broken"),
-        &[
-            (
-                "exercise/line_through_points.rs",
-                edited(&line, "(-v.y, v.x)", "(-v.y, v.x, 0)"),
-            ),
-            ("exercise/plane_through_points.rs", plane.clone()),
-        ],
-    );
+    with_plane("broken", edited(&line, "(-v.y, v.x)", "(-v.y, v.x, 0)"));
 
     let instructor = workspace().join(CHAPTER);
     let before = (
@@ -255,8 +206,7 @@ fn deeper(x: f64) -> f64 {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{stdout}{stderr}");
 
-    let table: serde_json::Value =
-        serde_json::from_str(&fs::read_to_string(&json).unwrap()).unwrap();
+    let table = read_json(&json);
     let rows = table["rows"].as_array().unwrap();
     let verdict = |student: &str, exercise: &str| -> (String, String) {
         let row = rows
@@ -289,26 +239,29 @@ fn deeper(x: f64) -> f64 {
     }
     assert_eq!(verdict("right", line).0, "passed", "{context}");
 
-    let (kind, message) = verdict("wrong", line);
-    assert_eq!(kind, "failed", "{context}");
+    // The line's verdict of `student` is of `kind`: its message.
+    let line_verdict = |student: &str, kind: &str| -> String {
+        let (got, message) = verdict(student, line);
+        assert_eq!(got, kind, "{student}: {context}");
+        message
+    };
+
+    let message = line_verdict("wrong", "failed");
     assert!(
         message.contains("(tests/line_through_points.rs:"),
         "the failing test's location: {context}"
     );
 
-    let (kind, message) = verdict("looping", line);
-    assert_eq!(kind, "timed out", "{context}");
+    let message = line_verdict("looping", "timed out");
     assert!(message.starts_with("timed out after 5 s"), "{context}");
 
-    let (kind, message) = verdict("missing", line);
-    assert_eq!(kind, "missing file", "{context}");
     assert_eq!(
-        message, "no exercise/line_through_points.rs (the stub was used)",
+        line_verdict("missing", "missing file"),
+        "no exercise/line_through_points.rs (the stub was used)",
         "{context}"
     );
 
-    let (kind, message) = verdict("broken", line);
-    assert_eq!(kind, "does not compile", "{context}");
+    let message = line_verdict("broken", "does not compile");
     assert!(
         message.contains("(at exercise/line_through_points.rs:"),
         "{context}"
@@ -316,8 +269,7 @@ fn deeper(x: f64) -> f64 {
 
     // Each trick is refused or fails, never passes.
     for (student, what) in [("path", "`#[path]`"), ("include", "`include!`")] {
-        let (kind, message) = verdict(student, line);
-        assert_eq!(kind, "refused", "{student}: {context}");
+        let message = line_verdict(student, "refused");
         assert!(
             message.starts_with("exercise/line_through_points.rs:1:")
                 && message.contains(what)
@@ -325,16 +277,13 @@ fn deeper(x: f64) -> f64 {
             "{student}: {context}"
         );
     }
-    let (kind, message) = verdict("forger", line);
-    assert_eq!(kind, "refused", "{context}");
+    let message = line_verdict("forger", "refused");
     assert!(message.contains("`env`"), "{context}");
-    let (kind, message) = verdict("quiet-forger", line);
-    assert_eq!(kind, "failed", "{context}");
+    let message = line_verdict("quiet-forger", "failed");
     assert!(message.contains("crashed"), "{context}");
     // The oracle passes every test; only the held-out cases, drawn from a
     // seed it could not know, find it out.
-    let (kind, message) = verdict("oracle", line);
-    assert_eq!(kind, "failed", "{context}");
+    let message = line_verdict("oracle", "failed");
     assert!(
         message.starts_with("held-out case ")
             && message.contains(" of 64 (rotate90(")

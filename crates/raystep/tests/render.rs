@@ -3,22 +3,12 @@
 
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
-fn raystep(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_raystep"))
-        .args(args)
-        .output()
-        .expect("raystep runs")
-}
+mod common;
+use common::{fails_in_one_line, raystep, succeeds, text};
 
 fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("raystep-render")
-        .join(name);
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).unwrap();
-    dir
+    common::scratch("raystep-render", name)
 }
 
 fn scene(chapter_scene: &str) -> String {
@@ -36,59 +26,56 @@ fn png_size(bytes: &[u8]) -> (u32, u32) {
     (be(16), be(20))
 }
 
+/// Renders `scene` into `out` (with `args`), which must succeed and say
+/// which chapter's renderer drew it, and returns the image's size.
+fn render(
+    scene: &str,
+    out: &Path,
+    args: &[&str],
+    renderer: &str,
+) -> (u32, u32) {
+    let mut all = vec!["render", scene, "--out", out.to_str().unwrap()];
+    all.extend_from_slice(args);
+    let said = succeeds(&all);
+    assert!(said.contains(renderer), "{scene}: {said}");
+    png_size(&fs::read(out).unwrap())
+}
+
+/// Renders `scene` into `out` (with `args`), which must fail in one line
+/// and write nothing; returns that line.
+fn refused(scene: &str, out: &Path, args: &[&str]) -> String {
+    let mut all = vec!["render", scene, "--out", out.to_str().unwrap()];
+    all.extend_from_slice(args);
+    let stderr = fails_in_one_line(&all);
+    assert!(!out.exists());
+    stderr
+}
+
 #[test]
 fn renders_a_chapter_scene_at_the_asked_size() {
     let dir = scratch("good");
-    let out = dir.join("spheres.png");
-    let run = raystep(&[
-        "render",
+    let size = render(
         &scene("ch03-illumination/scenes/spheres.toml"),
-        "--out",
-        out.to_str().unwrap(),
-        "--size",
-        "64x36",
-        "--threads",
-        "2",
-    ]);
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
+        &dir.join("spheres.png"),
+        &["--size", "64x36", "--threads", "2"],
+        "ch03 renderer",
     );
-    assert_eq!(png_size(&fs::read(&out).unwrap()), (64, 36));
-    assert!(String::from_utf8_lossy(&run.stdout).contains("ch03 renderer"));
+    assert_eq!(size, (64, 36));
     // chapter 4's scene gets chapter 4's tracer (with shadows)
-    let out4 = dir.join("two.png");
-    let run = raystep(&[
-        "render",
+    render(
         &scene("ch04-shadows/scenes/two-lights.toml"),
-        "--out",
-        out4.to_str().unwrap(),
-        "--size",
-        "32x18",
-    ]);
-    assert!(run.status.success());
-    assert!(String::from_utf8_lossy(&run.stdout).contains("ch04 renderer"));
+        &dir.join("two.png"),
+        &["--size", "32x18"],
+        "ch04 renderer",
+    );
     // chapters 5 and 06: the recursive tracers, each for its own scenes
     for (file, renderer) in [
         ("ch05-reflection/scenes/mirrors.toml", "ch05 renderer"),
         ("ch06-refraction/scenes/bubble.toml", "ch06 renderer"),
     ] {
         let out = dir.join("recursive.png");
-        let run = raystep(&[
-            "render",
-            &scene(file),
-            "--out",
-            out.to_str().unwrap(),
-            "--size",
-            "32x18",
-        ]);
-        assert!(run.status.success(), "{file}");
-        assert!(
-            String::from_utf8_lossy(&run.stdout).contains(renderer),
-            "{file}"
-        );
-        assert_eq!(png_size(&fs::read(&out).unwrap()), (32, 18));
+        let size = render(&scene(file), &out, &["--size", "32x18"], renderer);
+        assert_eq!(size, (32, 18));
     }
 }
 
@@ -97,28 +84,16 @@ fn a_bad_scene_is_one_error_line_and_no_file() {
     let dir = scratch("bad");
     let bad = dir.join("bad.toml");
     fs::write(&bad, "[camera]\nlook_from = [0, 0, 5]\nlook_at = [0, 0, 0]\n\n[[objects]]\nsphere = { center = [0, 0, 0], radius = -1 }\n").unwrap();
-    let out = dir.join("bad.png");
-    let run = raystep(&[
-        "render",
-        bad.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(!run.status.success());
-    let stderr = String::from_utf8_lossy(&run.stderr);
-    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    let stderr = refused(bad.to_str().unwrap(), &dir.join("bad.png"), &[]);
     assert!(stderr.contains("bad.toml:6:"), "{stderr}");
     assert!(
         stderr.contains("objects[0].sphere.radius: must be positive, got -1"),
         "{stderr}"
     );
-    assert!(!out.exists());
     for args in [&["--size", "0x10"][..], &["--threads", "0"]] {
         let mut all = vec!["render", bad.to_str().unwrap()];
         all.extend_from_slice(args);
-        let run = raystep(&all);
-        assert!(!run.status.success());
-        assert_eq!(String::from_utf8_lossy(&run.stderr).lines().count(), 1);
+        fails_in_one_line(&all);
     }
 }
 
@@ -127,40 +102,23 @@ fn a_bad_scene_is_one_error_line_and_no_file() {
 #[test]
 fn chapter_07_rasterizes_polygons_only() {
     let dir = scratch("ch07");
-    let out = dir.join("shapes.png");
-    let run = raystep(&[
-        "render",
+    let size = render(
         &scene("ch07-two-methods/scenes/shapes.toml"),
-        "--out",
-        out.to_str().unwrap(),
-        "--size",
-        "48x27",
-    ]);
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
+        &dir.join("shapes.png"),
+        &["--size", "48x27"],
+        "ch07 renderer",
     );
-    assert!(String::from_utf8_lossy(&run.stdout).contains("ch07 renderer"));
-    assert_eq!(png_size(&fs::read(&out).unwrap()), (48, 27));
+    assert_eq!(size, (48, 27));
 
-    let out = dir.join("spheres.png");
-    let run = raystep(&[
-        "render",
+    let stderr = refused(
         &scene("ch03-illumination/scenes/spheres.toml"),
-        "--chapter",
-        "07",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(!run.status.success());
-    let stderr = String::from_utf8_lossy(&run.stderr);
-    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        &dir.join("spheres.png"),
+        &["--chapter", "07"],
+    );
     assert!(
         stderr.contains("spheres.toml: objects[0] is a sphere"),
         "{stderr}"
     );
-    assert!(!out.exists());
 }
 
 /// Chapter 8's scene renders with chapter 8's shapes (its folder chooses
@@ -171,40 +129,20 @@ fn chapter_07_rasterizes_polygons_only() {
 fn chapter_08_renders_its_primitives_and_others_refuse_them() {
     let dir = scratch("ch08");
     let primitives = scene("ch08-bounding-volumes/scenes/primitives.toml");
-    let out = dir.join("primitives.png");
-    let run = raystep(&[
-        "render",
+    let size = render(
         &primitives,
-        "--out",
-        out.to_str().unwrap(),
-        "--size",
-        "90x40",
-    ]);
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
+        &dir.join("primitives.png"),
+        &["--size", "90x40"],
+        "ch08 renderer",
     );
-    assert!(String::from_utf8_lossy(&run.stdout).contains("ch08 renderer"));
-    assert_eq!(png_size(&fs::read(&out).unwrap()), (90, 40));
+    assert_eq!(size, (90, 40));
 
-    let refused = dir.join("refused.png");
-    let run = raystep(&[
-        "render",
-        &primitives,
-        "--chapter",
-        "06",
-        "--out",
-        refused.to_str().unwrap(),
-    ]);
-    assert!(!run.status.success());
-    let stderr = String::from_utf8_lossy(&run.stderr);
-    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    let not_drawn = dir.join("refused.png");
+    let stderr = refused(&primitives, &not_drawn, &["--chapter", "06"]);
     assert!(
         stderr.contains("objects[2].box: a box is one of chapter 8's"),
         "{stderr}"
     );
-    assert!(!refused.exists());
 
     let spindle = dir.join("spindle.toml");
     fs::write(
@@ -213,23 +151,14 @@ fn chapter_08_renders_its_primitives_and_others_refuse_them() {
          [[objects]]\ntorus = { center = [0, 0, 0], major = 1, minor = 1 }\n",
     )
     .unwrap();
-    let run = raystep(&[
-        "render",
-        spindle.to_str().unwrap(),
-        "--chapter",
-        "08",
-        "--out",
-        refused.to_str().unwrap(),
-    ]);
-    assert!(!run.status.success());
-    let stderr = String::from_utf8_lossy(&run.stderr);
+    let stderr =
+        refused(spindle.to_str().unwrap(), &not_drawn, &["--chapter", "08"]);
     assert!(
         stderr.contains(
             "spindle.toml:6:50: objects[0].torus.minor: must be less than major"
         ),
         "{stderr}"
     );
-    assert!(!refused.exists());
 }
 
 /// `--accel bvh`, `grid`, `kdtree` and `auto` search with chapter 8's
@@ -249,23 +178,13 @@ fn every_accelerator_draws_the_same_image_as_the_loop() {
         let accels = ["brute", "bvh", "grid", "kdtree", "auto"];
         for accel in accels {
             let out = dir.join(format!("{accel}.png"));
-            let run = raystep(&[
-                "render",
+            let args = ["--size", "64x36", "--accel", accel];
+            render(
                 &scene(chapter_scene),
-                "--size",
-                "64x36",
-                "--accel",
-                accel,
-                "--out",
-                out.to_str().unwrap(),
-            ]);
-            assert!(
-                run.status.success(),
-                "{}",
-                String::from_utf8_lossy(&run.stderr)
+                &out,
+                &args,
+                &format!("--accel {accel}"),
             );
-            let said = String::from_utf8_lossy(&run.stdout).into_owned();
-            assert!(said.contains(&format!("--accel {accel}")), "{said}");
             images.push(fs::read(&out).unwrap());
         }
         for (accel, image) in accels.iter().zip(&images).skip(1) {
@@ -279,6 +198,6 @@ fn every_accelerator_draws_the_same_image_as_the_loop() {
         "octree",
     ]);
     assert!(!run.status.success());
-    let stderr = String::from_utf8_lossy(&run.stderr);
+    let stderr = text(&run.stderr);
     assert!(stderr.contains("'octree'"), "{stderr}");
 }

@@ -1,6 +1,6 @@
 //! A failed snapshot, said as the first row whose values differ.
 //!
-//! The chapters' snapshots are mostly tables from `raystep_check::Table`: a
+//! The chapters' snapshots are mostly tables from [`crate::Table`]: a
 //! header line, a rule line (`------|-----`), then one row a line, the cells
 //! padded to line up and joined by ` | `. When one value gets wider or
 //! narrower, every line of the table changes (the padding and the rule), so
@@ -18,7 +18,7 @@ pub struct SnapshotTable {
 }
 
 impl SnapshotTable {
-    /// Reads a table in `raystep_check::Table`'s layout; `None` if `text`
+    /// Reads a table in [`crate::Table`]'s layout; `None` if `text`
     /// is not one (fewer than two columns, no rule line, a row with another
     /// number of cells).
     pub fn parse(text: &str) -> Option<SnapshotTable> {
@@ -224,9 +224,9 @@ mod tests {
     use super::*;
 
     /// A table as the chapters' snapshots hold it: written by
-    /// `raystep_check::Table` itself.
+    /// [`crate::Table`] itself.
     fn table(columns: &[&str], rows: &[&[&str]]) -> String {
-        let mut table = raystep_check::Table::new(columns);
+        let mut table = crate::Table::new(columns);
         for row in rows {
             table.row(row);
         }

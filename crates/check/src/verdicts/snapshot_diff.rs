@@ -1,9 +1,9 @@
 //! insta's report of a failed snapshot, read back: which snapshot, where
 //! it is asserted, and the new text rebuilt from the expected snapshot file
 //! and the diff insta printed (which leaves out unchanged lines far from a
-//! change), so that [`crate::snapshot_table`] can compare the two whole.
+//! change), so that [`super::snapshot_table`] can compare the two whole.
 
-use crate::snapshot_table;
+use super::snapshot_table;
 
 /// One row of insta's diff: `  old   new │±text`.
 #[derive(Debug, Clone, PartialEq, Eq)]

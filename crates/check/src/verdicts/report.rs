@@ -1,0 +1,253 @@
+//! A chapter's report: each exercise judged by the results of its test
+//! binary, the chapter's other tests counted, and the snapshot files that
+//! are not the reference named.
+
+use std::collections::HashMap;
+use std::fmt;
+use std::path::PathBuf;
+
+use super::build_failure::BuildFailure;
+use super::libtest_output::{Failure, Outcome, TestResult};
+use super::snapshot_changes::{self, ChangedSnapshot};
+use super::test_binary::{Target, TestBinary};
+use super::verdict::Verdict;
+
+/// The verdict on every exercise, the count of the chapter's other tests,
+/// and the snapshot files that are not the reference.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct Report {
+    /// Each exercise and its verdict, in the order given.
+    pub exercises: Vec<(String, Verdict)>,
+    /// Other tests (unit tests, tests of no exercise) that passed.
+    pub other_passed: usize,
+    /// Other tests that stopped at a `todo!()`: they wait for the exercises.
+    pub other_waiting: usize,
+    /// Other tests that failed, each as `name (file:line): why`, in source
+    /// order (else by name), and other binaries that crashed or timed out.
+    pub other_failed: Vec<String>,
+    /// Set when nothing was built to run.
+    pub build_failure: Option<BuildFailure>,
+    /// Snapshot files that are not the reference.
+    pub changed_snapshots: Vec<ChangedSnapshot>,
+    /// The package folder, as the user would type it (for the advice on
+    /// changed snapshots).
+    pub package_dir: PathBuf,
+    /// The chapter's held-out program as built with the code checked
+    /// (`examples/chNN_held_out.rs`, see [`crate::held_out`]), if it has
+    /// one.
+    pub held_out_runner: Option<PathBuf>,
+}
+
+impl Report {
+    /// The report when nothing could be built: every exercise says why.
+    pub fn not_built(exercises: &[String], failure: BuildFailure) -> Report {
+        Report {
+            exercises: exercises
+                .iter()
+                .map(|e| {
+                    (e.clone(), Verdict::NotBuilt(failure.failure.clone()))
+                })
+                .collect(),
+            build_failure: Some(failure),
+            ..Report::default()
+        }
+    }
+
+    /// Every exercise passed, no other test failed or waits, and every
+    /// snapshot is the reference.
+    pub fn all_passed(&self) -> bool {
+        self.build_failure.is_none()
+            && self.other_failed.is_empty()
+            && self.other_waiting == 0
+            && self.changed_snapshots.is_empty()
+            && self.exercises.iter().all(|(_, v)| *v == Verdict::Passed)
+    }
+
+    /// The other tests in one line: `20 passed, 6 wait for your exercises
+    /// (todo!()), 1 failed (first: …)`.
+    pub fn other_tests(&self) -> String {
+        let mut line = format!("{} passed", self.other_passed);
+        if self.other_waiting > 0 {
+            line.push_str(&format!(
+                ", {} wait for your exercises (todo!())",
+                self.other_waiting
+            ));
+        }
+        if let Some(first) = self.other_failed.first() {
+            line.push_str(&format!(
+                ", {} failed (first: {first})",
+                self.other_failed.len()
+            ));
+        }
+        line
+    }
+}
+
+impl fmt::Display for Report {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        const OTHER: &str = "other tests";
+        if let Some(build) = &self.build_failure {
+            writeln!(f, "  {}", build.failure)?;
+        } else {
+            let width = self
+                .exercises
+                .iter()
+                .map(|(e, _)| e.len())
+                .chain([OTHER.len()])
+                .max()
+                .unwrap_or(0);
+            for (exercise, verdict) in &self.exercises {
+                writeln!(f, "  {exercise:width$}  {verdict}")?;
+            }
+            writeln!(f, "  {OTHER:width$}  {}", self.other_tests())?;
+        }
+        for line in
+            snapshot_changes::advice(&self.changed_snapshots, &self.package_dir)
+        {
+            writeln!(f, "{line}")?;
+        }
+        if self.build_failure.is_some() {
+            return Ok(());
+        }
+        let passed = self
+            .exercises
+            .iter()
+            .filter(|(_, v)| *v == Verdict::Passed)
+            .count();
+        if self.exercises.is_empty() {
+            writeln!(f, "this chapter has no exercises")
+        } else {
+            writeln!(f, "{passed} of {} exercises passed", self.exercises.len())
+        }
+    }
+}
+
+/// Judges each exercise by the results of its test binary `tests/<exercise>.rs`.
+/// `sources` holds the text of the `tests/*.rs` files by stem, to put
+/// failing tests in source order (otherwise, and for unit tests, by name).
+pub fn report(
+    exercises: &[String],
+    binaries: &[TestBinary],
+    sources: &HashMap<String, String>,
+) -> Report {
+    let is_exercise = |b: &TestBinary| matches!(&b.target, Target::Test(stem) if exercises.contains(stem));
+    let exercises = exercises
+        .iter()
+        .map(|exercise| {
+            let own: Vec<&TestBinary> = binaries
+                .iter()
+                .filter(|b| b.target == Target::Test(exercise.clone()))
+                .collect();
+            let verdict = verdict(
+                exercise,
+                &own,
+                sources.get(exercise).map(String::as_str),
+            );
+            (exercise.clone(), verdict)
+        })
+        .collect();
+    let mut report = Report {
+        exercises,
+        ..Report::default()
+    };
+    for binary in binaries.iter().filter(|b| !is_exercise(b)) {
+        let source = match &binary.target {
+            Target::Test(stem) => sources.get(stem).map(String::as_str),
+            Target::Unit(_) => None,
+        };
+        let mut results: Vec<&TestResult> = binary.results.iter().collect();
+        results.sort_by_key(|r| (source_position(source, &r.name), &r.name));
+        for result in results {
+            match &result.outcome {
+                Outcome::Passed => report.other_passed += 1,
+                Outcome::Ignored => {}
+                Outcome::Failed(Some(why)) if why.is_todo() => {
+                    report.other_waiting += 1;
+                }
+                Outcome::Failed(why) => report
+                    .other_failed
+                    .push(describe(&result.name, why.as_ref())),
+            }
+        }
+        if let Some(crash) = &binary.crashed {
+            report
+                .other_failed
+                .push(format!("{}: {crash}", binary.target));
+        }
+        if let Some(timed_out) = &binary.timed_out {
+            report
+                .other_failed
+                .push(format!("{}: {timed_out}", binary.target));
+        }
+    }
+    report
+}
+
+/// Where the test `name` (`tests::x` or `x`) is defined in `source`;
+/// `usize::MAX` if unknown, so that those come last, by name.
+fn source_position(source: Option<&str>, name: &str) -> usize {
+    let short = name.rsplit("::").next().unwrap_or(name);
+    source
+        .and_then(|s| s.find(&format!("fn {short}(")))
+        .unwrap_or(usize::MAX)
+}
+
+/// One exercise's verdict from its binaries' results.
+fn verdict(
+    exercise: &str,
+    binaries: &[&TestBinary],
+    source: Option<&str>,
+) -> Verdict {
+    if binaries.is_empty() {
+        return Verdict::Failed(format!(
+            "no tests ran (expected tests/{exercise}.rs)"
+        ));
+    }
+    // Killed before it could finish: what did report says too little.
+    if let Some(timed_out) = binaries.iter().find_map(|b| b.timed_out.as_ref())
+    {
+        return Verdict::TimedOut(timed_out.clone());
+    }
+    let mut failed: Vec<(&str, Option<&Failure>)> = binaries
+        .iter()
+        .flat_map(|b| &b.results)
+        .filter_map(|r| match &r.outcome {
+            Outcome::Failed(why) => Some((r.name.as_str(), why.as_ref())),
+            _ => None,
+        })
+        .collect();
+    failed.sort_by_key(|(name, _)| (source_position(source, name), *name));
+    let not_todo = failed
+        .iter()
+        .find(|(_, why)| !why.is_some_and(Failure::is_todo));
+    let crash = binaries.iter().find_map(|b| b.crashed.as_ref());
+    if let Some((name, why)) = not_todo {
+        // A binary that crashes never prints why its tests failed.
+        if let (None, Some(crash)) = (why, crash) {
+            return Verdict::Failed(format!(
+                "{name}: failed, and {crash} before it could say why"
+            ));
+        }
+        return Verdict::Failed(describe(name, *why));
+    }
+    if let Some(crash) = crash {
+        return Verdict::Failed(crash.clone());
+    }
+    if failed.is_empty() {
+        Verdict::Passed
+    } else {
+        Verdict::NotAttempted
+    }
+}
+
+/// `name (file:line): what went wrong`.
+fn describe(name: &str, why: Option<&Failure>) -> String {
+    match why {
+        Some(Failure {
+            message,
+            at: Some(at),
+        }) => format!("{name} ({at}): {message}"),
+        Some(Failure { message, at: None }) => format!("{name}: {message}"),
+        None => format!("{name}: failed (no panic message)"),
+    }
+}
