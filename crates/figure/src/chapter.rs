@@ -1,11 +1,10 @@
 //! What a chapter hands the command line: one description per chapter,
 //! which `raystep figures`, `measure`, `render` and `check` all read.
-use std::path::PathBuf;
+use std::fmt::Display;
 
-use raystep_render::csv::{CsvRow, from_csv};
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
-use raystep_world::Accelerate;
+use raystep_world::{Accelerate, World};
 
 use crate::{ChartError, Figure};
 
@@ -13,7 +12,8 @@ use crate::{ChartError, Figure};
 /// how it renders a scene file, and which exercises it has.
 ///
 /// Each chapter's figures crate (`chapters/chNN-*/figures`) exports one as
-/// `CHAPTER`; the command line keeps the list of them, in lecture order.
+/// `CHAPTER`, built with [`Chapter::new`] and what the chapter has
+/// besides; the command line keeps the list of them, in lecture order.
 #[derive(Clone, Copy, Debug)]
 pub struct Chapter {
     /// `ch04`: the id the command line takes, and the name of the
@@ -45,6 +45,19 @@ pub struct Chapter {
 pub type Renderer =
     fn(&Scene, &str, &RenderOptions, Accelerate) -> Result<Image, String>;
 
+/// What every chapter's [`Renderer`] does around its tracer: the scene's
+/// `world` (as the chapter builds it: chapter 3's shapes or chapter 8's),
+/// searched as `accelerate` says, drawn by `draw`; an error becomes its
+/// one line.
+pub fn render_world<E: Display, F: Display>(
+    world: Result<World, E>,
+    accelerate: Accelerate,
+    draw: impl FnOnce(&World) -> Result<Image, F>,
+) -> Result<Image, String> {
+    let world = world.map_err(|e| e.to_string())?.accelerated(accelerate);
+    draw(&world).map_err(|e| e.to_string())
+}
+
 /// One timing run behind a chart.
 #[derive(Clone, Copy, Debug)]
 pub struct Measurement {
@@ -60,7 +73,93 @@ pub struct Measurement {
     pub run: fn(usize, &mut dyn FnMut()) -> Result<String, String>,
 }
 
+/// A [`Measurement`] from the progress bar's name, the CSV file's name,
+/// the steps function and the function that measures the rows (given the
+/// rounds and the step callback, it returns rows of a
+/// [`raystep_render::csv::Row`], or them or what is missing):
+/// `measurement!("ch04 acne", "acne.csv", steps, measure_acne)`.
+#[macro_export]
+macro_rules! measurement {
+    ($what:expr, $file:expr, $steps:expr, $measure:expr $(,)?) => {
+        $crate::Measurement::new($what, $file, $steps, |repeats, step| {
+            $crate::csv_text($measure(repeats, step))
+        })
+    };
+}
+
+impl Measurement {
+    /// The run `what` writing `file`, with its `steps` and its `run` (see
+    /// the fields, and [`measurement!`] for a run that measures rows).
+    pub const fn new(
+        what: &'static str,
+        file: &'static str,
+        steps: fn(usize) -> u64,
+        run: fn(usize, &mut dyn FnMut()) -> Result<String, String>,
+    ) -> Measurement {
+        Measurement {
+            what,
+            file,
+            steps,
+            run,
+        }
+    }
+}
+
 impl Chapter {
+    /// The chapter whose lecture crate is `package` (`ch04-shadows`: its
+    /// first four letters are the id), with its title and exercises; it
+    /// draws, charts, measures and renders nothing until the methods
+    /// below say what it does.
+    pub const fn new(
+        package: &'static str,
+        title: &'static str,
+        exercises: &'static [&'static str],
+    ) -> Chapter {
+        let (id, _) = package.split_at(4);
+        Chapter {
+            id,
+            title,
+            package,
+            exercises,
+            figures: Vec::new,
+            charts: &[],
+            measurements: &[],
+            renderer: None,
+        }
+    }
+
+    /// The same chapter drawing `figures`.
+    pub const fn figures(self, figures: fn() -> Vec<Figure>) -> Chapter {
+        Chapter { figures, ..self }
+    }
+
+    /// The same chapter drawing `charts`.
+    pub const fn charts(
+        self,
+        charts: &'static [fn() -> Result<Figure, ChartError>],
+    ) -> Chapter {
+        Chapter { charts, ..self }
+    }
+
+    /// The same chapter measuring `measurements`.
+    pub const fn measurements(
+        self,
+        measurements: &'static [Measurement],
+    ) -> Chapter {
+        Chapter {
+            measurements,
+            ..self
+        }
+    }
+
+    /// The same chapter rendering scene files with `renderer`.
+    pub const fn renderer(self, renderer: Renderer) -> Chapter {
+        Chapter {
+            renderer: Some(renderer),
+            ..self
+        }
+    }
+
     /// Every figure: the lecture figures, then the charts. A chart whose
     /// CSV is missing or bad is left out with a warning on stderr (and
     /// `raystep figures --check` then names its committed files as extra).
@@ -78,23 +177,52 @@ impl Chapter {
     }
 }
 
-/// The folder of the book's figures, `<workspace>/book/src/figures`, where
-/// `raystep figures` draws and `raystep measure` writes its CSV files.
-pub fn book_figures() -> PathBuf {
-    let kit = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let workspace = kit.ancestors().nth(2).unwrap_or(kit);
-    workspace.join("book").join("src").join("figures")
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-/// The rows of the measured CSV file `file` of chapter `chapter`, as the
-/// repository keeps it; an error names the file and says how to make it.
-pub fn measured<R: CsvRow>(
-    chapter: &str,
-    file: &str,
-) -> Result<Vec<R>, ChartError> {
-    let path = book_figures().join(chapter).join(file);
-    let text = std::fs::read_to_string(&path).map_err(|e| {
-        format!("{}: {e} (run `raystep measure` first)", path.display())
-    })?;
-    Ok(from_csv(&text).map_err(|e| format!("{}: {e}", path.display()))?)
+    fn one_figure() -> Vec<Figure> {
+        vec![Figure::new("x", "", crate::Page::new(1.0, 1.0))]
+    }
+
+    /// A one-column row.
+    #[derive(serde::Serialize, serde::Deserialize)]
+    struct Count {
+        n: u64,
+    }
+    impl raystep_render::csv::Row for Count {}
+
+    fn measure(rounds: usize, step: &mut dyn FnMut()) -> Vec<Count> {
+        step();
+        vec![Count { n: rounds as u64 }]
+    }
+
+    #[test]
+    fn a_chapter_is_its_package_title_and_exercises_until_told_more() {
+        const BARE: Chapter = Chapter::new("ch04-shadows", "Shadows", &["a"]);
+        assert_eq!((BARE.id, BARE.package), ("ch04", "ch04-shadows"));
+        assert_eq!((BARE.title, BARE.exercises), ("Shadows", &["a"][..]));
+        assert!((BARE.figures)().is_empty());
+        assert!(BARE.charts.is_empty() && BARE.measurements.is_empty());
+        assert!(BARE.renderer.is_none());
+        const FULL: Chapter = BARE
+            .figures(one_figure)
+            .measurements(&[crate::measurement!(
+                "ch04 count",
+                "count.csv",
+                |rounds| rounds as u64,
+                measure
+            )])
+            .renderer(|_, _, _, _| Err("no".into()));
+        assert_eq!((FULL.figures)().len(), 1);
+        let m = FULL.measurements[0];
+        assert_eq!(
+            (m.what, m.file, (m.steps)(3)),
+            ("ch04 count", "count.csv", 3)
+        );
+        let mut steps = 0;
+        assert_eq!((m.run)(7, &mut || steps += 1), Ok("n\n7\n".to_string()));
+        assert_eq!(steps, 1);
+        assert!(FULL.renderer.is_some());
+    }
 }

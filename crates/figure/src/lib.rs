@@ -42,11 +42,13 @@ mod chapter;
 mod chart;
 mod chart_labels;
 mod cli;
+mod dot_rows;
 mod error;
 mod field;
 mod glyphs;
 mod image;
 mod log_axis;
+mod measured;
 pub mod numbers;
 mod output;
 mod page;
@@ -56,10 +58,14 @@ mod side_view;
 mod style;
 mod text;
 
-pub use chapter::{Chapter, Measurement, Renderer, book_figures, measured};
+pub use chapter::{Chapter, Measurement, Renderer, render_world};
 pub use chart::{ChartArea, ChartError, chart, font};
 pub use chart_labels::{Labels, Spot};
+pub use dot_rows::DotRows;
 pub use log_axis::{AxisBreak, LogAxis, Ticked, decade};
+pub use measured::{
+    MeasuredRows, as_jobs, book_figures, csv_text, measured, writes_back,
+};
 /// plotters, re-exported so chapters draw charts with the kit's version.
 pub use plotters;
 pub use raystep_core::{DVec2, DVec3};

@@ -1,8 +1,11 @@
 //! Chart parts several chapters draw with: colours, log–log axes, lines
 //! through dots, a legend row and point labels that cover nothing.
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use crate::{ChartArea, ChartError, Labels, Spot, font};
+use crate::log_axis::Ticked;
+use crate::{AxisBreak, ChartArea, ChartError, Labels, LogAxis, Spot, font};
 
 /// Okabe–Ito blue (the chart colours are colour-blind safe).
 pub const BLUE: RGBColor = RGBColor(0, 114, 178);
@@ -110,6 +113,48 @@ where
     Ok(())
 }
 
+/// A dot of `colour` at `at`, moved `dy` px down (up if negative): one
+/// of the dots of a row in a chart of named rows.
+pub fn dot<DB: DrawingBackend, X, Y>(
+    c: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
+    at: (X::ValueType, Y::ValueType),
+    dy: i32,
+    colour: &RGBColor,
+) -> Result<(), ChartError>
+where
+    X: Ranged,
+    Y: Ranged,
+    DB::ErrorType: 'static,
+{
+    c.draw_series(std::iter::once(
+        EmptyElement::at(at) + Circle::new((0, dy), 6, colour.filled()),
+    ))?;
+    Ok(())
+}
+
+/// `text` `px` tall in `colour`, `dx` px right of `at`, centred on it
+/// vertically: a note at the end of a row.
+pub fn note<DB: DrawingBackend, X, Y>(
+    c: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
+    at: (X::ValueType, Y::ValueType),
+    dx: i32,
+    text: String,
+    (px, colour): (f64, &RGBColor),
+) -> Result<(), ChartError>
+where
+    X: Ranged,
+    Y: Ranged,
+    DB::ErrorType: 'static,
+{
+    let style = font(px)
+        .color(colour)
+        .pos(Pos::new(HPos::Left, VPos::Center));
+    c.draw_series(std::iter::once(
+        EmptyElement::at(at) + Text::new(text, (dx, 0), style),
+    ))?;
+    Ok(())
+}
+
 /// A pale line through `points` (x, y) and a dot of `radius` on each.
 pub fn line_with_dots(
     c: &mut LogChart,
@@ -144,6 +189,73 @@ pub fn legend(
     Ok(())
 }
 
+/// A legend row of short lines with a dot on each and names, at the top
+/// of `area`, the names `px` tall: the legend of a chart of lines.
+pub fn line_legend(
+    area: &ChartArea,
+    entries: &[(&str, RGBColor)],
+    (x, spacing): (i32, i32),
+    px: f64,
+) -> Result<(), ChartError> {
+    for (i, (name, colour)) in entries.iter().enumerate() {
+        let x = x + spacing * i as i32;
+        area.draw(&PathElement::new(
+            vec![(x, 18), (x + 28, 18)],
+            colour.stroke_width(3),
+        ))?;
+        area.draw(&Circle::new((x + 14, 18), 4, colour.filled()))?;
+        area.draw(&Text::new(*name, (x + 36, 9), font(px)))?;
+    }
+    Ok(())
+}
+
+/// A chart of render time across and an error up.
+pub type ErrorChart<'a, 'b> =
+    ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, Ticked>>;
+
+/// The panel "accuracy against speed" on `area`: the render times of
+/// `millis` across (a little wider), the error named `error` up on
+/// `errors`, with its break below the row of 0; every run is to be drawn
+/// as a point on it.
+pub fn accuracy_against_speed<'a, 'b>(
+    area: &'a ChartArea<'b>,
+    millis: impl Iterator<Item = f64> + Clone,
+    errors: &LogAxis,
+    error: &str,
+) -> Result<ErrorChart<'a, 'b>, ChartError> {
+    let max_ms = millis.clone().fold(0.0, f64::max) * 1.05;
+    let min_ms = millis.fold(f64::INFINITY, f64::min) * 0.95;
+    let mut c = ChartBuilder::on(area)
+        .caption("accuracy against speed", font(17.0))
+        .margin(10)
+        .margin_right(24)
+        .x_label_area_size(52)
+        .y_label_area_size(72)
+        .build_cartesian_2d(min_ms..max_ms, errors.range())?;
+    c.configure_mesh()
+        .x_desc("render time, ms (160×90, one thread)")
+        .y_desc(error)
+        .x_labels(10)
+        .x_label_formatter(&|x| format!("{x:.1}"))
+        .y_label_formatter(&|y| errors.label(y))
+        .label_style(font(16.0))
+        .axis_desc_style(font(15.0))
+        .light_line_style(WHITE)
+        .draw()?;
+    if let Some(at) = errors.break_at() {
+        c.draw_series([AxisBreak::y((min_ms, at))])?;
+    }
+    Ok(c)
+}
+
+/// The y of the row named `name` in a chart of named rows, the first name
+/// on top (row `n − 1`, as [`row_label`] labels them); the top row if no
+/// row has that name.
+pub fn row_of<S: AsRef<str>>(names: &[S], name: &str) -> f64 {
+    let k = names.iter().position(|n| n.as_ref() == name).unwrap_or(0);
+    names.len() as f64 - 1.0 - k as f64
+}
+
 /// The label of row `y` in a chart of named rows, the first name on top
 /// (row `n − 1`) and the last at the bottom (row 0); no label between
 /// rows. For `y_label_formatter(&|y| row_label(&names, *y))`.
@@ -154,4 +266,20 @@ pub fn row_label<S: AsRef<str>>(names: &[S], y: f64) -> String {
         return String::new();
     }
     names[k as usize].as_ref().to_string()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_row_is_found_where_its_name_is_labelled() {
+        let names = ["top", "middle", "bottom"];
+        for name in names {
+            assert_eq!(row_label(&names, row_of(&names, name)), name);
+        }
+        assert_eq!(row_of(&names, "top"), 2.0);
+        assert_eq!(row_of(&names, "nowhere"), 2.0);
+        assert_eq!(row_label(&names, 0.5), "");
+    }
 }

@@ -1,193 +1,301 @@
 //! The small CSV files behind the charts: `raystep measure` writes them,
-//! `raystep figures` draws from them. Plain comma-separated fields, one
-//! header line, no quoting; every error names the line.
+//! `raystep figures` draws from them. One header line, the columns'
+//! names, then one line per row; every error names the line.
 //!
-//! A chart's data is a list of rows of one type that implements
-//! [`CsvRow`]; [`to_csv`] writes them and [`from_csv`] reads them back.
+//! A chart's row is a struct deriving serde's `Serialize` and
+//! `Deserialize`, one field per column in the file's order, that
+//! implements [`Row`]; the csv crate writes ([`to_csv`]) and reads
+//! ([`from_csv`]) it. A number's format is its field's `#[serde(with =
+//! "…")]`, one of [`Decimals`], [`Exp`], [`Plain`] and [`Flag`]; counts
+//! and names are written as they are.
+//!
+//! ```
+//! use raystep_render::csv::{Decimals, Row, from_csv, to_csv};
+//! use serde::{Deserialize, Serialize};
+//!
+//! #[derive(Debug, PartialEq, Serialize, Deserialize)]
+//! struct Point {
+//!     name: String,
+//!     #[serde(with = "Decimals::<2>")]
+//!     x: f64,
+//! }
+//! impl Row for Point {}
+//!
+//! let text = to_csv(&[Point { name: "a".into(), x: 1.5 }]);
+//! assert_eq!(text, "name,x\na,1.50\n");
+//! assert_eq!(from_csv::<Point>(&text).unwrap()[0].x, 1.5);
+//! ```
+mod columns;
+mod fields;
 
-use std::fmt::Display;
+use ::csv::{
+    DeserializeErrorKind, ErrorKind, ReaderBuilder, StringRecord, Trim,
+    WriterBuilder,
+};
+use serde::Serialize;
+use serde::de::DeserializeOwned;
 
-/// One row of a measured chart's CSV file.
-pub trait CsvRow: Sized {
-    /// The header line, the columns' names separated by commas.
-    const HEADER: &'static str;
+pub use columns::columns;
+pub use fields::{Decimals, Exp, Flag, Plain};
 
-    /// The row as one line of fields in [`CsvRow::HEADER`]'s order,
-    /// without the line break.
-    fn to_line(&self) -> String;
+/// One row of a measured chart's CSV file: a struct deriving `Serialize`
+/// and `Deserialize` whose fields are the columns, in order.
+pub trait Row: Serialize + DeserializeOwned {
+    /// What a good row is beyond its fields' types (a known method name,
+    /// a positive time); an error says what is wrong, and the reader puts
+    /// the line in front. Every row is good unless its type says more.
+    fn check(&self) -> Result<(), String> {
+        Ok(())
+    }
+}
 
-    /// The row of one data line; an error names the line
-    /// ([`Record::error`]).
-    fn from_record(record: &Record) -> Result<Self, String>;
+/// A step of a [`Row::check`]: every one of `values` is positive (times,
+/// sizes), or the error "`what` must be positive".
+pub fn positive(values: &[f64], what: &str) -> Result<(), String> {
+    if values.iter().all(|&x| x > 0.0) {
+        Ok(())
+    } else {
+        Err(format!("{what} must be positive"))
+    }
+}
+
+/// The header line of `R`'s files: its columns, separated by commas.
+pub fn header<R: Row>() -> String {
+    columns::<R>().join(",")
 }
 
 /// The rows as CSV: the header, then one line per row.
-pub fn to_csv<R: CsvRow>(rows: &[R]) -> String {
-    let mut csv = format!("{}\n", R::HEADER);
+///
+/// # Panics
+/// If a row does not write one field per column (a programming error: a
+/// field that is not a number, a bool or a text).
+pub fn to_csv<R: Row>(rows: &[R]) -> String {
+    let mut writer = WriterBuilder::new()
+        .has_headers(false)
+        .from_writer(Vec::new());
+    writer
+        .write_record(columns::<R>())
+        .expect("a header writes to memory");
     for row in rows {
-        csv.push_str(&row.to_line());
-        csv.push('\n');
+        writer
+            .serialize(row)
+            .expect("a row writes one field per column");
     }
-    csv
+    let bytes = writer.into_inner().expect("rows write to memory");
+    String::from_utf8(bytes).expect("rows of text make text")
 }
 
-/// Reads [`to_csv`]'s output back; an error names the line and what is
-/// wrong.
-pub fn from_csv<R: CsvRow>(text: &str) -> Result<Vec<R>, String> {
-    records(text, R::HEADER)?
+/// [`from_csv`] of `lines` under `R`'s header: what a test of a
+/// [`Row::check`] reads.
+pub fn from_lines<R: Row>(lines: &str) -> Result<Vec<R>, String> {
+    from_csv(&format!("{}\n{lines}", header::<R>()))
+}
+
+/// Reads [`to_csv`]'s output back; blank lines are skipped and fields
+/// trimmed. An error names the line and what is wrong: not the header,
+/// a line without one field per column, a field that is not a number
+/// (`nan` and `inf` are not, in any column: measurements are finite) or
+/// not a count, or what [`Row::check`] finds.
+pub fn from_csv<R: Row>(text: &str) -> Result<Vec<R>, String> {
+    let columns = columns::<R>();
+    let mut reader = ReaderBuilder::new()
+        .has_headers(false)
+        .flexible(true)
+        .trim(Trim::All)
+        .from_reader(text.as_bytes());
+    let mut records = reader.records();
+    match records.next() {
+        Some(Ok(first)) if first.iter().eq(columns.iter().copied()) => {}
+        _ => {
+            let header = columns.join(",");
+            return Err(format!("line 1: expected the header `{header}`"));
+        }
+    }
+    records
+        .filter(|record| {
+            !matches!(record, Ok(r) if r.len() == 1 && r[0].is_empty())
+        })
+        .map(|record| {
+            let record = record.map_err(|e| e.to_string())?;
+            row(&record, line_of(text, &record), columns)
+        })
+        .collect()
+}
+
+/// The line `record` stands on, from 1. (The csv crate's own line count
+/// passes over blank lines, and a record's position is where its reading
+/// began: before the blank lines above it.)
+fn line_of(text: &str, record: &StringRecord) -> usize {
+    let byte = record.position().map_or(0, |p| p.byte() as usize);
+    let blank = text.as_bytes()[byte..]
         .iter()
-        .map(R::from_record)
-        .collect()
+        .take_while(|&&b| b == b'\n' || b == b'\r')
+        .count();
+    let newlines = text.as_bytes()[..byte + blank].iter();
+    1 + newlines.filter(|&&b| b == b'\n').count()
 }
 
-/// The data lines of `text`, whose first line must be `header`; blank lines
-/// are skipped. An error names the line: a wrong header, or a line without
-/// one field per column of the header.
-pub fn records<'a>(
-    text: &'a str,
-    header: &str,
-) -> Result<Vec<Record<'a>>, String> {
-    let mut lines = text.lines().enumerate();
-    match lines.next() {
-        Some((_, first)) if first.trim() == header => {}
-        _ => return Err(format!("line 1: expected the header `{header}`")),
+/// The row of data line `line`, or the error on that line.
+fn row<R: Row>(
+    record: &StringRecord,
+    line: usize,
+    columns: &[&str],
+) -> Result<R, String> {
+    let on_line = |message: String| format!("line {line}: {message}");
+    if record.len() != columns.len() {
+        let (expected, got) = (columns.len(), record.len());
+        return Err(on_line(format!("expected {expected} fields, got {got}")));
     }
-    let columns = header.split(',').count();
-    lines
-        .filter(|(_, line)| !line.trim().is_empty())
-        .map(|(i, line)| {
-            let record = Record {
-                line: i + 1,
-                fields: line.split(',').map(str::trim).collect(),
-            };
-            if record.fields.len() == columns {
-                Ok(record)
-            } else {
-                Err(record.error(format!(
-                    "expected {columns} fields, got {}",
-                    record.fields.len()
-                )))
-            }
-        })
-        .collect()
+    let infinite =
+        |field: &str| field.parse().is_ok_and(|x: f64| !x.is_finite());
+    if let Some(k) = record.iter().position(infinite) {
+        let (name, field) = (columns[k], &record[k]);
+        return Err(on_line(format!("{name} `{field}` is not a number")));
+    }
+    let row: R = record
+        .deserialize(None)
+        .map_err(|e| on_line(field_error(&e, record, columns)))?;
+    row.check().map_err(on_line)?;
+    Ok(row)
 }
 
-/// One data line: its number in the file (from 1) and its trimmed fields,
-/// as many as the header has columns.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Record<'a> {
-    /// The line's number in the file, from 1.
-    pub line: usize,
-    fields: Vec<&'a str>,
-}
-
-impl<'a> Record<'a> {
-    /// Field `k` as it is written.
-    pub fn text(&self, k: usize) -> &'a str {
-        self.fields[k]
-    }
-
-    /// Field `k` as a finite number; the error calls it `name`.
-    pub fn number(&self, k: usize, name: &str) -> Result<f64, String> {
-        self.fields[k]
-            .parse::<f64>()
-            .ok()
-            .filter(|x| x.is_finite())
-            .ok_or_else(|| {
-                self.error(format!(
-                    "{name} `{}` is not a number",
-                    self.fields[k]
-                ))
-            })
-    }
-
-    /// Field `k` as a count (a whole number ≥ 0); the error calls it `name`.
-    pub fn count(&self, k: usize, name: &str) -> Result<u64, String> {
-        self.fields[k].parse::<u64>().map_err(|_| {
-            self.error(format!("{name} `{}` is not a count", self.fields[k]))
-        })
-    }
-
-    /// `message` on this line: `line 4: message`.
-    pub fn error(&self, message: impl Display) -> String {
-        format!("line {}: {message}", self.line)
+/// A field that does not read as its column's type, named by its column.
+fn field_error(
+    error: &::csv::Error,
+    record: &StringRecord,
+    columns: &[&str],
+) -> String {
+    let ErrorKind::Deserialize { err, .. } = error.kind() else {
+        return error.to_string();
+    };
+    let what = match err.kind() {
+        DeserializeErrorKind::ParseInt(_) => "is not a count",
+        DeserializeErrorKind::ParseFloat(_) => "is not a number",
+        _ => return err.to_string(),
+    };
+    match err.field().map(|k| k as usize) {
+        Some(k) if k < columns.len() => {
+            format!("{} `{}` {what}", columns[k], &record[k])
+        }
+        _ => err.to_string(),
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use serde::Deserialize;
 
-    #[derive(Debug, PartialEq)]
+    #[derive(Debug, PartialEq, Serialize, Deserialize)]
     struct Point {
         name: String,
+        #[serde(with = "Plain")]
         x: f64,
+        count: u64,
+        #[serde(rename = "on", with = "Flag")]
+        chosen: bool,
     }
 
-    impl CsvRow for Point {
-        const HEADER: &'static str = "name,x";
-        fn to_line(&self) -> String {
-            format!("{},{}", self.name, self.x)
+    impl Row for Point {
+        fn check(&self) -> Result<(), String> {
+            match self.name.as_str() {
+                "" => Err("no name".into()),
+                _ => Ok(()),
+            }
         }
-        fn from_record(r: &Record) -> Result<Point, String> {
-            Ok(Point {
-                name: r.text(0).to_string(),
-                x: r.number(1, "x")?,
-            })
+    }
+
+    fn point(name: &str, x: f64, count: u64, chosen: bool) -> Point {
+        Point {
+            name: name.into(),
+            x,
+            count,
+            chosen,
         }
     }
 
     #[test]
-    fn rows_round_trip_through_the_header() {
-        let rows = vec![
-            Point {
-                name: "a".into(),
-                x: 1.5,
-            },
-            Point {
-                name: "b".into(),
-                x: -2.0,
-            },
-        ];
+    fn rows_round_trip_under_their_header() {
+        assert_eq!(columns::<Point>(), ["name", "x", "count", "on"]);
+        assert_eq!(header::<Point>(), "name,x,count,on");
+        let rows = vec![point("a b", 1.5, 7, true), point("c", -2.0, 0, false)];
         let text = to_csv(&rows);
-        assert_eq!(text, "name,x\na,1.5\nb,-2\n");
+        assert_eq!(text, "name,x,count,on\na b,1.5,7,1\nc,-2,0,0\n");
         assert_eq!(from_csv::<Point>(&text).unwrap(), rows);
+        // no rows: the header alone
+        assert_eq!(to_csv::<Point>(&[]), "name,x,count,on\n");
+        assert_eq!(from_csv::<Point>("name,x,count,on\n"), Ok(vec![]));
+    }
+
+    #[test]
+    fn each_format_writes_as_its_format_string() {
+        #[derive(Debug, PartialEq, Serialize, Deserialize)]
+        struct Formats {
+            #[serde(with = "Decimals::<0>")]
+            d0: f64,
+            #[serde(with = "Decimals::<3>")]
+            d3: f64,
+            #[serde(with = "Exp")]
+            e: f64,
+            #[serde(with = "Plain")]
+            p: f64,
+        }
+        impl Row for Formats {}
+        let x = 1234.56789;
+        let row = Formats {
+            d0: x,
+            d3: x,
+            e: 1e-3,
+            p: 0.1,
+        };
+        let line = format!("{x:.0},{x:.3},{:e},{}", 1e-3, 0.1);
+        assert_eq!(line, "1235,1234.568,1e-3,0.1");
+        assert_eq!(to_csv(&[row]), format!("d0,d3,e,p\n{line}\n"));
+        let back = from_csv::<Formats>(&format!("d0,d3,e,p\n{line}\n"));
+        assert_eq!(back.unwrap()[0].e, 1e-3);
+    }
+
+    #[test]
+    fn fields_are_trimmed_and_blank_lines_skipped() {
+        let text = "name,x,count,on\n x , 1.5,7,1\n\n  \ny,-2e3,0,2\n";
+        let rows = from_csv::<Point>(text).unwrap();
         assert_eq!(
-            from_csv::<Point>("name,x\na,y\n"),
-            Err("line 2: x `y` is not a number".to_string())
+            rows,
+            [point("x", 1.5, 7, true), point("y", -2e3, 0, false)]
         );
     }
 
     #[test]
-    fn fields_numbers_counts_and_errors_name_the_line() {
-        let text = "a,b,c\n x , 1.5,7\n\ny,-2e3,0\n";
-        let rows = records(text, "a,b,c").unwrap();
-        assert_eq!(rows.len(), 2);
-        assert_eq!((rows[0].line, rows[0].text(0)), (2, "x"));
-        assert_eq!(rows[0].number(1, "b"), Ok(1.5));
-        assert_eq!(rows[0].count(2, "c"), Ok(7));
-        assert_eq!(rows[1].line, 4);
-        assert_eq!(rows[1].number(1, "b"), Ok(-2000.0));
+    fn a_check_may_ask_for_positive_values() {
+        assert_eq!(positive(&[1.0, 1e-9], "times"), Ok(()));
+        let error = Err("times must be positive".to_string());
+        assert_eq!(positive(&[1.0, 0.0], "times"), error);
+        assert_eq!(positive(&[-1.0], "times"), error);
+    }
+
+    #[test]
+    fn errors_name_the_line_and_the_column() {
+        let read = |body: &str| {
+            from_lines::<Point>(&format!("a,1,1,1\n{body}")).map(|_| ())
+        };
+        for (body, error) in [
+            ("b,y,1,1\n", "line 3: x `y` is not a number"),
+            ("b,nan,1,1\n", "line 3: x `nan` is not a number"),
+            ("b,1,inf,1\n", "line 3: count `inf` is not a number"),
+            ("\nb,1,-2e3,1\n", "line 4: count `-2e3` is not a count"),
+            ("b,1,1,x\n", "line 3: on `x` is not a count"),
+            ("b,1,1\n", "line 3: expected 4 fields, got 3"),
+            (" ,1,1,1\n", "line 3: no name"),
+        ] {
+            assert_eq!(read(body), Err(error.to_string()), "{body:?}");
+        }
         assert_eq!(
-            rows[1].count(1, "b"),
-            Err("line 4: b `-2e3` is not a count".to_string())
+            from_csv::<Point>("name,x\n"),
+            Err("line 1: expected the header `name,x,count,on`".into())
         );
         assert_eq!(
-            records("a,b\n1,nan\n", "a,b").unwrap()[0].number(1, "b"),
-            Err("line 2: b `nan` is not a number".to_string())
+            from_csv::<Point>(""),
+            Err("line 1: expected the header `name,x,count,on`".into())
         );
-        assert_eq!(
-            records("a,b,c\n1,2\n", "a,b,c"),
-            Err("line 2: expected 3 fields, got 2".to_string())
-        );
-        assert_eq!(
-            records("x,y\n", "a,b"),
-            Err("line 1: expected the header `a,b`".to_string())
-        );
-        assert_eq!(
-            records("", "a,b"),
-            Err("line 1: expected the header `a,b`".to_string())
-        );
-        assert_eq!(records("a,b\n", "a,b"), Ok(vec![]));
     }
 }

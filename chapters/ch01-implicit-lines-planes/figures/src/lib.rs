@@ -6,13 +6,9 @@ mod diagrams;
 use raystep_figure::Chapter;
 
 /// What chapter 1 hands `raystep figures`, `measure`, `render` and `check`.
-pub const CHAPTER: Chapter = Chapter {
-    id: "ch01",
-    title: "Implicit lines and planes",
-    package: "ch01-implicit-lines-planes",
-    exercises: &["line_through_points", "plane_through_points"],
-    figures: diagrams::all,
-    charts: &[],
-    measurements: &[],
-    renderer: None,
-};
+pub const CHAPTER: Chapter = Chapter::new(
+    "ch01-implicit-lines-planes",
+    "Implicit lines and planes",
+    &["line_through_points", "plane_through_points"],
+)
+.figures(diagrams::all);

@@ -6,13 +6,9 @@ mod diagrams;
 use raystep_figure::Chapter;
 
 /// What chapter 2 hands `raystep figures`, `measure`, `render` and `check`.
-pub const CHAPTER: Chapter = Chapter {
-    id: "ch02",
-    title: "Plane and polygon hits",
-    package: "ch02-plane-polygon-hits",
-    exercises: &["ray_plane", "inside_polygon"],
-    figures: diagrams::all,
-    charts: &[],
-    measurements: &[],
-    renderer: None,
-};
+pub const CHAPTER: Chapter = Chapter::new(
+    "ch02-plane-polygon-hits",
+    "Plane and polygon hits",
+    &["ray_plane", "inside_polygon"],
+)
+.figures(diagrams::all);

@@ -2,6 +2,7 @@
 //! render time, drawn from `book/src/figures/ch04/acne.csv` (written by
 //! `raystep measure`).
 use raystep_figure::numbers::power;
+use raystep_figure::plots::{accuracy_against_speed, line_legend};
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::{
     AxisBreak, ChartError, Figure, LogAxis, chart, font, measured,
@@ -56,17 +57,10 @@ fn draw(
 ) -> Result<(), ChartError> {
     // a legend across the top, then the two panels, one above the other
     let (legend, panels) = area.split_vertically(64);
-    for (i, ((_, offset), colour)) in
-        CHART_STRATEGIES.iter().zip(COLOURS).enumerate()
-    {
-        let x = 20 + 176 * i as i32;
-        legend.draw(&PathElement::new(
-            vec![(x, 18), (x + 28, 18)],
-            colour.stroke_width(3),
-        ))?;
-        legend.draw(&Circle::new((x + 14, 18), 4, colour.filled()))?;
-        legend.draw(&Text::new(name(*offset), (x + 36, 9), font(16.0)))?;
-    }
+    let names = CHART_STRATEGIES.map(|(_, offset)| name(offset));
+    let entries: Vec<(&str, RGBColor)> =
+        names.iter().map(String::as_str).zip(COLOURS).collect();
+    line_legend(&legend, &entries, (20, 176), 16.0)?;
     legend.draw(&Text::new(
         "row 0: no pixel wrong; each strategy gets a line of its own there",
         (20, 40),
@@ -134,30 +128,13 @@ fn draw(
     }
 
     // Bottom: every (strategy, scale) run as a point: time against errors.
-    let max_ms = rows.iter().map(|r| r.millis).fold(0.0, f64::max) * 1.05;
-    let min_ms =
-        rows.iter().map(|r| r.millis).fold(f64::INFINITY, f64::min) * 0.95;
-    let mut by_time = ChartBuilder::on(&bottom)
-        .caption("accuracy against speed", font(17.0))
-        .margin(10)
-        .margin_right(24)
-        .x_label_area_size(52)
-        .y_label_area_size(72)
-        .build_cartesian_2d(min_ms..max_ms, y_axis.range())?;
-    by_time
-        .configure_mesh()
-        .x_desc("render time, ms (160×90, one thread)")
-        .y_desc("acne + leaks (fraction)")
-        .x_labels(10)
-        .x_label_formatter(&|x| format!("{x:.1}"))
-        .y_label_formatter(&|y| y_axis.label(y))
-        .label_style(font(16.0))
-        .axis_desc_style(font(15.0))
-        .light_line_style(WHITE)
-        .draw()?;
-    if let Some(at) = y_axis.break_at() {
-        by_time.draw_series([AxisBreak::y((min_ms, at))])?;
-    }
+    let millis = rows.iter().map(|r| r.millis);
+    let mut by_time = accuracy_against_speed(
+        &bottom,
+        millis,
+        &y_axis,
+        "acne + leaks (fraction)",
+    )?;
     for ((name, _), colour) in CHART_STRATEGIES.iter().zip(COLOURS) {
         by_time
             .draw_series(of(name).map(|r| {

@@ -6,11 +6,13 @@
 //! `book/src/figures/ch04/acne.csv`; `raystep figures` draws the chart
 //! from that file, so the figures stay byte-identical between runs.
 
-use raystep_render::csv::{CsvRow, Record};
+use raystep_figure::as_jobs;
+use raystep_render::csv::{Decimals, Exp, Row};
 use raystep_render::timing::Timing;
 use raystep_render::{Progress, RenderOptions};
 
 use ch04::{Offset, render, scaled_scene, shadow_errors};
+use serde::{Deserialize, Serialize};
 
 /// The strategies on the chart, with their names in the CSV.
 pub const CHART_STRATEGIES: [(&str, Offset); 5] = [
@@ -27,20 +29,26 @@ pub const CHART_SCALES: [f64; 8] = [1e-3, 1e-2, 1e-1, 1.0, 1e1, 1e2, 1e3, 1e4];
 /// The image size measured: 160 × 90.
 pub const CHART_SIZE: (u32, u32) = (160, 90);
 
-/// One strategy at one scale.
-#[derive(Clone, Debug, PartialEq)]
+/// One strategy at one scale: a line of `acne.csv`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct AcneRow {
     /// The strategy's name in [`CHART_STRATEGIES`].
     pub strategy: String,
     /// The scene's scale.
+    #[serde(with = "Exp")]
     pub scale: f64,
     /// The fraction of judged pixels wrongly in shadow.
+    #[serde(with = "Decimals::<6>")]
     pub acne: f64,
     /// The fraction of judged pixels wrongly lit.
+    #[serde(with = "Decimals::<6>")]
     pub leaks: f64,
     /// The median time of one single-threaded render, in milliseconds.
+    #[serde(with = "Decimals::<3>")]
     pub millis: f64,
 }
+
+impl Row for AcneRow {}
 
 /// How a render is timed: 8 renders per sample, the strategies taking
 /// turns at each scale; `raystep measure --repeats` sets the number of
@@ -73,9 +81,9 @@ pub fn measure_acne(rounds: usize, mut step: impl FnMut()) -> Vec<AcneRow> {
                 }) as Box<dyn FnMut() + '_>
             })
             .collect();
-        let mut jobs: Vec<&mut dyn FnMut()> =
-            jobs.iter_mut().map(|j| &mut **j as _).collect();
-        let times = TIMING.with_rounds(rounds).median_ms(&mut jobs, || ());
+        let times = TIMING
+            .with_rounds(rounds)
+            .median_ms(&mut as_jobs(&mut jobs), || ());
         for ((name, offset), millis) in CHART_STRATEGIES.into_iter().zip(times)
         {
             let errors = shadow_errors(world, offset);
@@ -96,32 +104,10 @@ pub fn measure_acne(rounds: usize, mut step: impl FnMut()) -> Vec<AcneRow> {
     rows
 }
 
-impl CsvRow for AcneRow {
-    const HEADER: &'static str = "strategy,scale,acne,leaks,millis";
-
-    fn to_line(&self) -> String {
-        let r = self;
-        format!(
-            "{},{:e},{:.6},{:.6},{:.3}",
-            r.strategy, r.scale, r.acne, r.leaks, r.millis
-        )
-    }
-
-    fn from_record(r: &Record) -> Result<AcneRow, String> {
-        Ok(AcneRow {
-            strategy: r.text(0).to_string(),
-            scale: r.number(1, "scale")?,
-            acne: r.number(2, "acne")?,
-            leaks: r.number(3, "leaks")?,
-            millis: r.number(4, "millis")?,
-        })
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use raystep_render::csv::{from_csv, to_csv};
+    use raystep_render::csv::{from_csv, from_lines, to_csv};
 
     #[test]
     fn csv_round_trip_and_errors() {
@@ -132,16 +118,23 @@ mod tests {
             leaks: 0.0025,
             millis: 12.5,
         }];
-        assert_eq!(from_csv::<AcneRow>(&to_csv(&rows)).unwrap(), rows);
-        assert!(
-            from_csv::<AcneRow>("nope\n")
-                .unwrap_err()
-                .starts_with("line 1:")
-        );
-        let bad = format!("{}\nnone,1e0,x,0,1\n", AcneRow::HEADER);
+        let csv = to_csv(&rows);
         assert_eq!(
-            from_csv::<AcneRow>(&bad).unwrap_err(),
+            csv,
+            "strategy,scale,acne,leaks,millis\n\
+             scale-aware,1e-3,0.000000,0.002500,12.500\n"
+        );
+        assert_eq!(from_csv::<AcneRow>(&csv).unwrap(), rows);
+        assert_eq!(
+            from_lines::<AcneRow>("none,1e0,x,0,1\n").unwrap_err(),
             "line 2: acne `x` is not a number"
         );
+    }
+
+    /// The committed file reads and writes back byte for byte: a new
+    /// measurement writes its format.
+    #[test]
+    fn the_committed_csv_writes_back_unchanged() {
+        raystep_figure::writes_back::<AcneRow>("ch04", "acne.csv").unwrap();
     }
 }

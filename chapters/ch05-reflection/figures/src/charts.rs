@@ -2,6 +2,7 @@
 //! max error) against the time its render takes, on each mirror scene; drawn from `book/src/figures/ch05/stopping.csv` (written by
 //! `raystep measure`).
 use raystep_figure::numbers::power;
+use raystep_figure::plots::line_legend;
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::{
     AxisBreak, ChartError, Figure, Labels, LogAxis, Spot, chart, font, measured,
@@ -84,15 +85,7 @@ fn draw(
             CONTRIBUTION_COLOUR,
         ),
     ];
-    for (i, (name, colour)) in entries.iter().enumerate() {
-        let x = 20 + 420 * i as i32;
-        legend.draw(&PathElement::new(
-            vec![(x, 18), (x + 28, 18)],
-            colour.stroke_width(3),
-        ))?;
-        legend.draw(&Circle::new((x + 14, 18), 4, colour.filled()))?;
-        legend.draw(&Text::new(*name, (x + 36, 9), font(15.0)))?;
-    }
+    line_legend(&legend, &entries, (20, 420), 15.0)?;
     legend.draw(&Text::new(
         "row 0: no error at all; each rule gets a line of its own there",
         (20, 40),

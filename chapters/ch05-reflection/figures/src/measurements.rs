@@ -6,11 +6,13 @@
 //! `raystep measure` runs [`measure_stopping`] and writes its rows into
 //! `book/src/figures/ch05/stopping.csv`; `raystep figures` draws the chart
 //! from that file, so the figures stay byte-identical between runs.
-use raystep_render::csv::{CsvRow, Record};
+use raystep_figure::as_jobs;
+use raystep_render::csv::{Decimals, Plain, Row};
 use raystep_render::timing::Timing;
 use raystep_render::{Image, Progress, RenderOptions, image_error};
 
 use ch05::{RayCounts, SAFETY_DEPTH, Stop, World, render};
+use serde::{Deserialize, Serialize, Serializer};
 
 /// The scenes on the chart: their names in the CSV and their files.
 pub const CHART_SCENES: [(&str, &str); 2] = [
@@ -81,25 +83,51 @@ pub fn chart_world(name: &str) -> World {
     world
 }
 
-/// One stopping rule on one scene.
-#[derive(Clone, Debug, PartialEq)]
+/// One stopping rule on one scene: a line of `stopping.csv`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct StopRow {
     /// The scene's name in [`CHART_SCENES`].
     pub scene: String,
     /// [`DEPTH_RULE`] or [`CONTRIBUTION_RULE`].
     pub rule: String,
     /// The maximum depth, or the threshold.
+    #[serde(serialize_with = "depth_or_threshold")]
     pub parameter: f64,
     /// RMSE against the [`REFERENCE`] image, in 8-bit levels.
+    #[serde(with = "Decimals::<6>")]
     pub rmse: f64,
     /// The largest error against it, in 8-bit levels.
+    #[serde(with = "Plain")]
     pub max_error: f64,
     /// Every ray shot: primary, shadow and reflected.
     pub rays: u64,
     /// The reflected rays alone, the ones the rules decide about.
     pub secondary: u64,
     /// The median time of one single-threaded render, in milliseconds.
+    #[serde(with = "Decimals::<3>")]
     pub millis: f64,
+}
+
+impl Row for StopRow {
+    fn check(&self) -> Result<(), String> {
+        match self.rule.as_str() {
+            DEPTH_RULE | CONTRIBUTION_RULE => Ok(()),
+            rule => Err(format!("unknown rule `{rule}`")),
+        }
+    }
+}
+
+/// A rule's parameter in the CSV: a depth as a whole number (`3`), a
+/// threshold, which lies below 1, in e notation (`3e-3`).
+fn depth_or_threshold<S: Serializer>(
+    parameter: &f64,
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    if parameter.fract() == 0.0 {
+        s.collect_str(parameter)
+    } else {
+        s.collect_str(&format_args!("{parameter:e}"))
+    }
 }
 
 /// Runs every rule of [`chart_rules`] on every scene: error and ray counts
@@ -133,9 +161,9 @@ pub fn measure_stopping(rounds: usize, mut step: impl FnMut()) -> Vec<StopRow> {
                 }) as Box<dyn FnMut()>
             })
             .collect();
-        let mut jobs: Vec<&mut dyn FnMut()> =
-            jobs.iter_mut().map(|j| &mut **j as _).collect();
-        let times = TIMING.with_rounds(rounds).median_ms(&mut jobs, &mut step);
+        let times = TIMING
+            .with_rounds(rounds)
+            .median_ms(&mut as_jobs(&mut jobs), &mut step);
         let first = rows.len() - rules.len();
         for (row, millis) in rows[first..].iter_mut().zip(times) {
             row.millis = millis;
@@ -219,51 +247,10 @@ pub fn savings(rows: &[StopRow]) -> Vec<Saving> {
         .collect()
 }
 
-impl CsvRow for StopRow {
-    const HEADER: &'static str =
-        "scene,rule,parameter,rmse,max_error,rays,secondary,millis";
-
-    fn to_line(&self) -> String {
-        let r = self;
-        let parameter = if r.rule == DEPTH_RULE {
-            format!("{}", r.parameter)
-        } else {
-            format!("{:e}", r.parameter)
-        };
-        format!(
-            "{},{},{parameter},{:.6},{},{},{},{:.3}",
-            r.scene, r.rule, r.rmse, r.max_error, r.rays, r.secondary, r.millis
-        )
-    }
-
-    fn from_record(r: &Record) -> Result<StopRow, String> {
-        let rule = r.text(1);
-        if rule != DEPTH_RULE && rule != CONTRIBUTION_RULE {
-            return Err(r.error(format!("unknown rule `{rule}`")));
-        }
-        Ok(StopRow {
-            scene: r.text(0).to_string(),
-            rule: rule.to_string(),
-            parameter: r.number(2, "parameter")?,
-            rmse: r.number(3, "rmse")?,
-            max_error: r.number(4, "max_error")?,
-            rays: r.count(5, "rays")?,
-            secondary: r.count(6, "secondary")?,
-            millis: r.number(7, "millis")?,
-        })
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use raystep_render::csv::to_csv;
-
-    const CSV_HEADER: &str = StopRow::HEADER;
-
-    fn from_csv(text: &str) -> Result<Vec<StopRow>, String> {
-        raystep_render::csv::from_csv(text)
-    }
+    use raystep_render::csv::{from_csv, from_lines, to_csv};
 
     fn stop_row(
         rule: &str,
@@ -292,15 +279,32 @@ mod tests {
         let csv = to_csv(&rows);
         assert!(csv.contains("\nmirrors,depth,3,1.250000,3,1500,500,1.500\n"));
         assert!(csv.contains("\nmirrors,contribution,3e-3,"));
-        assert_eq!(from_csv(&csv).unwrap(), rows);
-        assert!(from_csv("nope\n").unwrap_err().starts_with("line 1:"));
-        let bad = format!("{CSV_HEADER}\nmirrors,depth,1,x,0,1,1,1\n");
-        assert_eq!(
-            from_csv(&bad).unwrap_err(),
-            "line 2: rmse `x` is not a number"
-        );
-        let bad = format!("{CSV_HEADER}\nmirrors,rule3,1,0,0,1,1,1\n");
-        assert_eq!(from_csv(&bad).unwrap_err(), "line 2: unknown rule `rule3`");
+        assert_eq!(from_csv::<StopRow>(&csv).unwrap(), rows);
+        let bad = from_lines::<StopRow>("mirrors,rule3,1,0,0,1,1,1\n");
+        assert_eq!(bad.unwrap_err(), "line 2: unknown rule `rule3`");
+    }
+
+    /// Every rule of the chart writes its parameter as the rule says: a
+    /// depth whole, a threshold in e notation.
+    #[test]
+    fn depths_are_written_whole_and_thresholds_in_e_notation() {
+        for (rule, parameter, _) in chart_rules() {
+            let row = stop_row(rule, parameter, 1.0, 0);
+            let written = if rule == DEPTH_RULE {
+                format!("{parameter}")
+            } else {
+                format!("{parameter:e}")
+            };
+            let line = to_csv(&[row]);
+            assert!(line.contains(&format!(",{rule},{written},")), "{line}");
+        }
+    }
+
+    /// The committed file reads and writes back byte for byte: a new
+    /// measurement writes its format.
+    #[test]
+    fn the_committed_csv_writes_back_unchanged() {
+        raystep_figure::writes_back::<StopRow>("ch05", "stopping.csv").unwrap();
     }
 
     #[test]

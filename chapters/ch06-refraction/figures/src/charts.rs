@@ -2,6 +2,7 @@
 //! split at all are from the exact Fresnel split, material by material,
 //! against what they cost in render time and per call; drawn from
 //! `book/src/figures/ch06/fresnel.csv` (written by `raystep measure`).
+use raystep_figure::plots::{accuracy_against_speed, row_label};
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::{
     AxisBreak, ChartError, Figure, Labels, LogAxis, Spot, chart, font, measured,
@@ -61,16 +62,6 @@ fn slot(materials: &[(String, f64)], row: &FresnelRow) -> f64 {
     (materials.len() - 1 - k) as f64
 }
 
-/// The name and index of the material on `slot`, or nothing between slots.
-fn material_label(materials: &[(String, f64)], y: f64) -> String {
-    let k = materials.len() as f64 - 1.0 - y.round();
-    if (y - y.round()).abs() > 1e-6 || k < 0.0 || k >= materials.len() as f64 {
-        return String::new();
-    }
-    let (name, ior) = &materials[k as usize];
-    format!("{name} {ior}")
-}
-
 /// Each mode's marker a few px above or below the slot, so that equal
 /// values stay visible side by side.
 fn nudge(mode: usize) -> i32 {
@@ -99,6 +90,11 @@ fn draw(
     let materials = materials(rows);
     let slots = -0.5..(materials.len() as f64 - 0.5);
     let labels = materials.len();
+    // the name and index of the material on each slot
+    let names: Vec<String> = materials
+        .iter()
+        .map(|(name, ior)| format!("{name} {ior}"))
+        .collect();
     let errors = LogAxis::covering(rows.iter().map(|r| r.rmse));
     let of_mode = |k: usize| {
         let name = CHART_MODES[k].0;
@@ -116,7 +112,7 @@ fn draw(
         .x_desc("RMSE, 8-bit levels")
         .y_labels(labels)
         .x_label_formatter(&|x| errors.label(x))
-        .y_label_formatter(&|y| material_label(&materials, *y))
+        .y_label_formatter(&|y| row_label(&names, *y))
         .label_style(font(16.0))
         .axis_desc_style(font(15.0))
         .light_line_style(WHITE)
@@ -146,7 +142,7 @@ fn draw(
         .x_labels(5)
         .y_labels(labels)
         .x_label_formatter(&|x| format!("{x:.0}"))
-        .y_label_formatter(&|y| material_label(&materials, *y))
+        .y_label_formatter(&|y| row_label(&names, *y))
         .label_style(font(16.0))
         .axis_desc_style(font(15.0))
         .light_line_style(WHITE)
@@ -160,29 +156,9 @@ fn draw(
 
     // Below: every (material, mode) as a point: render time against error,
     // the zeros of each mode on a lane of their own.
-    let max_ms = rows.iter().map(|r| r.millis).fold(0.0, f64::max) * 1.05;
-    let min_ms =
-        rows.iter().map(|r| r.millis).fold(f64::INFINITY, f64::min) * 0.95;
-    let mut c = ChartBuilder::on(&bottom)
-        .caption("accuracy against speed", font(17.0))
-        .margin(10)
-        .margin_right(24)
-        .x_label_area_size(52)
-        .y_label_area_size(72)
-        .build_cartesian_2d(min_ms..max_ms, errors.range())?;
-    c.configure_mesh()
-        .x_desc("render time, ms (160×90, one thread)")
-        .y_desc("RMSE, 8-bit levels")
-        .x_labels(10)
-        .x_label_formatter(&|x| format!("{x:.1}"))
-        .y_label_formatter(&|y| errors.label(y))
-        .label_style(font(16.0))
-        .axis_desc_style(font(15.0))
-        .light_line_style(WHITE)
-        .draw()?;
-    if let Some(at) = errors.break_at() {
-        c.draw_series([AxisBreak::y((min_ms, at))])?;
-    }
+    let millis = rows.iter().map(|r| r.millis);
+    let mut c =
+        accuracy_against_speed(&bottom, millis, &errors, "RMSE, 8-bit levels")?;
     let at = |k: usize, r: &FresnelRow| {
         let y = if r.rmse == 0.0 {
             errors.zero_row() + LANE * (1.0 - k as f64)

@@ -5,48 +5,34 @@ mod charts;
 mod diagrams;
 pub mod measurements;
 
-use raystep_figure::{Chapter, Measurement};
-use raystep_render::csv::to_csv;
-use raystep_render::{Image, RenderOptions};
-use raystep_scene::Scene;
-use raystep_world::Accelerate;
+use raystep_figure::{Chapter, measurement, render_world};
+use raystep_render::{Image, RenderError, RenderOptions};
+use raystep_world::World;
 
 /// What chapter 6 hands `raystep figures`, `measure`, `render` and `check`.
-pub const CHAPTER: Chapter = Chapter {
-    id: "ch06",
-    title: "Refraction",
-    package: "ch06-refraction",
-    exercises: &["refraction", "schlick"],
-    figures: diagrams::all,
-    charts: &[diagrams::reflectance_chart, charts::fresnel_chart],
-    measurements: &[Measurement {
-        what: "ch06 fresnel",
-        file: "fresnel.csv",
-        steps: |_| ch06::REFRACTIVE_INDICES.len() as u64,
-        run: |repeats, step| {
-            Ok(to_csv(&measurements::measure_fresnel(repeats, step)))
-        },
-    }],
-    renderer: Some(render),
-};
+pub const CHAPTER: Chapter =
+    Chapter::new("ch06-refraction", "Refraction", &["refraction", "schlick"])
+        .figures(diagrams::all)
+        .charts(&[diagrams::reflectance_chart, charts::fresnel_chart])
+        .measurements(&[measurement!(
+            "ch06 fresnel",
+            "fresnel.csv",
+            |_| ch06::REFRACTIVE_INDICES.len() as u64,
+            measurements::measure_fresnel
+        )])
+        .renderer(|scene, file, options, accelerate| {
+            render_world(ch03::world(scene, file), accelerate, |world| {
+                render_exact(world, options)
+            })
+        });
 
-/// `raystep render` with chapter 6's tracer: reflection and refraction,
-/// split by the exact Fresnel equations.
-fn render(
-    scene: &Scene,
-    file: &str,
+/// Chapter 6's tracer as `raystep render` runs it: reflection and
+/// refraction, split by the exact Fresnel equations. Chapter 8 renders
+/// its own shapes with it.
+pub fn render_exact(
+    world: &World,
     options: &RenderOptions,
-    accelerate: Accelerate,
-) -> Result<Image, String> {
-    let world = ch03::world(scene, file)
-        .map_err(|e| e.to_string())?
-        .accelerated(accelerate);
-    let (image, _) = ch06::render(
-        &world,
-        &ch06::DEFAULT_STOP,
-        ch06::Fresnel::Exact,
-        options,
-    )
-    .map_err(|e| e.to_string())?;
-    Ok(image)
+) -> Result<Image, RenderError> {
+    let (stop, fresnel) = (&ch06::DEFAULT_STOP, ch06::Fresnel::Exact);
+    ch06::render(world, stop, fresnel, options).map(|(image, _)| image)
 }

@@ -10,12 +10,14 @@
 //! from that file, so the figures stay byte-identical between runs.
 use std::hint::black_box;
 
-use raystep_render::csv::{CsvRow, Record};
+use raystep_figure::as_jobs;
+use raystep_render::csv::{Decimals, Plain, Row};
 use raystep_render::timing::Timing;
 use raystep_render::{Progress, RenderOptions, image_error};
 use raystep_scene::Shape as ShapeSpec;
 
 use ch06::{DEFAULT_STOP, DVec3, Fresnel, REFRACTIVE_INDICES, World, render};
+use serde::{Deserialize, Serialize};
 
 /// The scene the chart's worlds are cut from: one ball of each material.
 pub const MATERIALS_SCENE: &str = include_str!("../../scenes/materials.toml");
@@ -76,26 +78,41 @@ pub fn one_ball_scene(material: &str) -> raystep_scene::Scene {
     scene
 }
 
-/// One material with one way of splitting kt.
-#[derive(Clone, Debug, PartialEq)]
+/// One material with one way of splitting kt: a line of `fresnel.csv`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct FresnelRow {
     /// The material's name in [`REFRACTIVE_INDICES`].
     pub material: String,
     /// Its index of refraction.
+    #[serde(with = "Plain")]
     pub ior: f64,
     /// The mode's name in [`CHART_MODES`].
     pub mode: String,
     /// RMSE against the [`REFERENCE`] image, in 8-bit levels.
+    #[serde(with = "Decimals::<6>")]
     pub rmse: f64,
     /// The largest error against it, in 8-bit levels.
+    #[serde(with = "Plain")]
     pub max_error: f64,
     /// Every ray shot: primary, shadow, reflected and transmitted.
     pub rays: u64,
     /// The median time of one single-threaded render, in milliseconds.
+    #[serde(with = "Decimals::<3>")]
     pub millis: f64,
     /// The median time of one call of the mode's reflectance, in
     /// nanoseconds (half the calls entering the material, half leaving).
+    #[serde(with = "Decimals::<3>")]
     pub nanos_per_call: f64,
+}
+
+impl Row for FresnelRow {
+    fn check(&self) -> Result<(), String> {
+        if CHART_MODES.iter().any(|(name, _)| *name == self.mode) {
+            Ok(())
+        } else {
+            Err(format!("unknown mode `{}`", self.mode))
+        }
+    }
 }
 
 /// One timed batch: [`CALLS`] reflectances of `mode` at cos θ spread over
@@ -183,60 +200,10 @@ pub fn measure_fresnel(
     rows
 }
 
-/// The boxed jobs as the timer takes them.
-fn as_jobs<'a>(
-    jobs: &'a mut [Box<dyn FnMut() + '_>],
-) -> Vec<&'a mut dyn FnMut()> {
-    jobs.iter_mut().map(|job| &mut **job as _).collect()
-}
-
-impl CsvRow for FresnelRow {
-    const HEADER: &'static str =
-        "material,ior,mode,rmse,max_error,rays,millis,nanos_per_call";
-
-    fn to_line(&self) -> String {
-        let r = self;
-        format!(
-            "{},{},{},{:.6},{},{},{:.3},{:.3}",
-            r.material,
-            r.ior,
-            r.mode,
-            r.rmse,
-            r.max_error,
-            r.rays,
-            r.millis,
-            r.nanos_per_call
-        )
-    }
-
-    fn from_record(r: &Record) -> Result<FresnelRow, String> {
-        let mode = r.text(2);
-        if !CHART_MODES.iter().any(|(name, _)| *name == mode) {
-            return Err(r.error(format!("unknown mode `{mode}`")));
-        }
-        Ok(FresnelRow {
-            material: r.text(0).to_string(),
-            ior: r.number(1, "ior")?,
-            mode: mode.to_string(),
-            rmse: r.number(3, "rmse")?,
-            max_error: r.number(4, "max_error")?,
-            rays: r.count(5, "rays")?,
-            millis: r.number(6, "millis")?,
-            nanos_per_call: r.number(7, "nanos_per_call")?,
-        })
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use raystep_render::csv::to_csv;
-
-    const CSV_HEADER: &str = FresnelRow::HEADER;
-
-    fn from_csv(text: &str) -> Result<Vec<FresnelRow>, String> {
-        raystep_render::csv::from_csv(text)
-    }
+    use raystep_render::csv::{from_csv, from_lines, to_csv};
 
     #[test]
     fn csv_round_trip_and_errors() {
@@ -254,15 +221,17 @@ mod tests {
         assert!(
             csv.contains("\nglass,1.5,schlick,0.250000,7,41234,3.500,2.125\n")
         );
-        assert_eq!(from_csv(&csv).unwrap(), rows);
-        assert!(from_csv("nope\n").unwrap_err().starts_with("line 1:"));
-        let bad = format!("{CSV_HEADER}\nglass,1.5,exact,x,0,1,1,1\n");
-        assert_eq!(
-            from_csv(&bad).unwrap_err(),
-            "line 2: rmse `x` is not a number"
-        );
-        let bad = format!("{CSV_HEADER}\nglass,1.5,cheap,0,0,1,1,1\n");
-        assert_eq!(from_csv(&bad).unwrap_err(), "line 2: unknown mode `cheap`");
+        assert_eq!(from_csv::<FresnelRow>(&csv).unwrap(), rows);
+        let bad = from_lines::<FresnelRow>("glass,1.5,cheap,0,0,1,1,1\n");
+        assert_eq!(bad.unwrap_err(), "line 2: unknown mode `cheap`");
+    }
+
+    /// The committed file reads and writes back byte for byte: a new
+    /// measurement writes its format.
+    #[test]
+    fn the_committed_csv_writes_back_unchanged() {
+        raystep_figure::writes_back::<FresnelRow>("ch06", "fresnel.csv")
+            .unwrap();
     }
 
     #[test]

@@ -13,10 +13,11 @@
 use std::path::{Path, PathBuf};
 
 use raystep_core::DVec3;
-use raystep_render::csv::{CsvRow, Record};
+use raystep_render::csv::{Decimals, Row};
 use raystep_render::timing::Timing;
 
 use ch07::{Mesh, MeshError, SHAPES, Stage, rasterize, raycast};
+use serde::{Deserialize, Serialize};
 
 /// The image size measured: 160 × 90, as in the chapter's other figures.
 pub const CHART_SIZE: (u32, u32) = (160, 90);
@@ -144,8 +145,8 @@ fn ball_material(stage: &Stage) -> usize {
         .expect("shapes.toml has a ball material")
 }
 
-/// One method on one stage.
-#[derive(Clone, Debug, PartialEq)]
+/// One method on one stage: a line of `scaling.csv`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ScalingRow {
     /// The stage's [`ChartScene::name`].
     pub scene: String,
@@ -167,7 +168,25 @@ pub struct ScalingRow {
     /// casting: once per pixel that hits.
     pub shaded: u64,
     /// The median time of one single-threaded render, in milliseconds.
+    #[serde(with = "Decimals::<4>")]
     pub millis: f64,
+}
+
+impl Row for ScalingRow {
+    fn check(&self) -> Result<(), String> {
+        if self.method != RASTERIZE && self.method != RAYCAST {
+            return Err(format!("unknown method `{}`", self.method));
+        }
+        // a log–log chart has no place for 0 ms or 0 triangles
+        if self.millis <= 0.0 {
+            let millis = self.millis;
+            return Err(format!("millis `{millis}` is not a positive number"));
+        }
+        if self.triangles == 0 {
+            return Err("no triangles".into());
+        }
+        Ok(())
+    }
 }
 
 /// The computed part of both methods' rows on `stage` (no time yet).
@@ -245,65 +264,10 @@ pub fn measure_scaling(
     Ok(rows)
 }
 
-impl CsvRow for ScalingRow {
-    const HEADER: &'static str =
-        "scene,triangles,method,tests,covered,shaded,millis";
-
-    fn to_line(&self) -> String {
-        let r = self;
-        format!(
-            "{},{},{},{},{},{},{:.4}",
-            r.scene,
-            r.triangles,
-            r.method,
-            r.tests,
-            r.covered,
-            r.shaded,
-            r.millis
-        )
-    }
-
-    fn from_record(r: &Record) -> Result<ScalingRow, String> {
-        let method = r.text(2);
-        if method != RASTERIZE && method != RAYCAST {
-            return Err(r.error(format!("unknown method `{method}`")));
-        }
-        // a log–log chart has no place for 0 ms or 0 triangles
-        let millis =
-            r.number(6, "millis").ok().filter(|&x| x > 0.0).ok_or_else(
-                || {
-                    r.error(format!(
-                        "millis `{}` is not a positive number",
-                        r.text(6)
-                    ))
-                },
-            )?;
-        let triangles = r.count(1, "triangles")?;
-        if triangles == 0 {
-            return Err(r.error("no triangles"));
-        }
-        Ok(ScalingRow {
-            scene: r.text(0).to_string(),
-            triangles,
-            method: method.to_string(),
-            tests: r.count(3, "tests")?,
-            covered: r.count(4, "covered")?,
-            shaded: r.count(5, "shaded")?,
-            millis,
-        })
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use raystep_render::csv::to_csv;
-
-    const CSV_HEADER: &str = ScalingRow::HEADER;
-
-    fn from_csv(text: &str) -> Result<Vec<ScalingRow>, String> {
-        raystep_render::csv::from_csv(text)
-    }
+    use raystep_render::csv::{from_csv, from_lines, to_csv};
 
     fn scaling_row(method: &str, millis: f64) -> ScalingRow {
         ScalingRow {
@@ -328,30 +292,27 @@ mod tests {
         assert!(
             csv.contains("\nball-2,332,raycast,40000,9000,7000,1234.5000\n")
         );
-        assert_eq!(from_csv(&csv).unwrap(), rows);
-        assert!(from_csv("nope\n").unwrap_err().starts_with("line 1:"));
-        let bad = format!(
-            "{CSV_HEADER}\nshapes,12,raycast,1,1,1,1\nshapes,x,raycast,1,1,1,1\n"
-        );
-        assert_eq!(
-            from_csv(&bad).unwrap_err(),
-            "line 3: triangles `x` is not a count"
-        );
-        let bad = format!("{CSV_HEADER}\nshapes,12,bvh,1,1,1,1\n");
-        assert_eq!(from_csv(&bad).unwrap_err(), "line 2: unknown method `bvh`");
-        // a log–log chart has no place for 0 ms or 0 triangles
-        let bad = format!("{CSV_HEADER}\nshapes,12,raycast,1,1,1,0\n");
-        assert_eq!(
-            from_csv(&bad).unwrap_err(),
-            "line 2: millis `0` is not a positive number"
-        );
-        let bad = format!("{CSV_HEADER}\nshapes,0,raycast,1,1,1,1\n");
-        assert_eq!(from_csv(&bad).unwrap_err(), "line 2: no triangles");
-        let bad = format!("{CSV_HEADER}\nshapes,12,raycast,1,1,1\n");
-        assert_eq!(
-            from_csv(&bad).unwrap_err(),
-            "line 2: expected 7 fields, got 6"
-        );
+        assert_eq!(from_csv::<ScalingRow>(&csv).unwrap(), rows);
+        for (lines, error) in [
+            ("shapes,12,bvh,1,1,1,1\n", "unknown method `bvh`"),
+            // a log–log chart has no place for 0 ms or 0 triangles
+            (
+                "shapes,12,raycast,1,1,1,0\n",
+                "millis `0` is not a positive number",
+            ),
+            ("shapes,0,raycast,1,1,1,1\n", "no triangles"),
+        ] {
+            let error = format!("line 2: {error}");
+            assert_eq!(from_lines::<ScalingRow>(lines), Err(error));
+        }
+    }
+
+    /// The committed file reads and writes back byte for byte: a new
+    /// measurement writes its format.
+    #[test]
+    fn the_committed_csv_writes_back_unchanged() {
+        raystep_figure::writes_back::<ScalingRow>("ch07", "scaling.csv")
+            .unwrap();
     }
 
     #[test]

@@ -4,8 +4,8 @@
 //! precision against leaks, and chapter 7's z-buffer against ray casting
 //! through a hierarchy.
 use raystep_figure::plots::{
-    BLUE, GREEN, GREY, ORANGE, label, legend, line_with_dots, log_log,
-    log_range, padded_log_range, row_label,
+    BLUE, GREEN, GREY, ORANGE, dot, label, legend, line_with_dots, log_log,
+    log_range, note, padded_log_range, row_label,
 };
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -272,23 +272,13 @@ pub fn precision_chart() -> Result<Figure, ChartError> {
                 for (ns, colour, dy) in
                     [(r.primary_ns, BLUE, -4), (r.incoherent_ns, ORANGE, 4)]
                 {
-                    c.draw_series(std::iter::once(
-                        EmptyElement::at((ns, y))
-                            + Circle::new((0, dy), 6, colour.filled()),
-                    ))?;
+                    dot(&mut c, (ns, y), dy, &colour)?;
                 }
-                let total: u64 = r.leaks.iter().sum();
-                let text = format!(
-                    "leaks: {} ({} · {} · {})",
-                    total, r.leaks[0], r.leaks[1], r.leaks[2]
-                );
-                let style = font(15.0)
-                    .color(&BLACK)
-                    .pos(Pos::new(HPos::Left, VPos::Center));
-                c.draw_series(std::iter::once(
-                    EmptyElement::at((max * 1.1, y))
-                        + Text::new(text, (14, 0), style),
-                ))?;
+                let [bunny, moved, floor] = r.leaks();
+                let total = bunny + moved + floor;
+                let text =
+                    format!("leaks: {total} ({bunny} · {moved} · {floor})");
+                note(&mut c, (max * 1.1, y), 14, text, (15.0, &BLACK))?;
             }
             Ok(())
         },

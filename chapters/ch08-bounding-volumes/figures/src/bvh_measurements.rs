@@ -9,13 +9,14 @@ use std::path::{Path, PathBuf};
 use ch07_figures::measurements::{ChartScene, chart_stages};
 use ch08::{
     AGGLOMERATIVE_LIMIT, Aabb, Builder, Bvh, DVec3, MeshBruteForce,
-    NodePrecision, leak_surfaces, leaks, shared_edge_rays,
+    NodePrecision,
 };
 use raystep_bench::{
-    Method, MethodReport, RaySet, compare, incoherent,
-    on_threads_with_steps, primary, trace,
+    Method, MethodReport, RaySet, compare, incoherent, on_threads_with_steps,
+    primary, trace,
 };
 use raystep_render::timing::Timing;
+use raystep_stability::{leak_surfaces, leaks, shared_edge_rays};
 use raystep_world::World;
 
 use crate::bvh_rows::{
@@ -53,8 +54,40 @@ fn ray_sets(triangles: &[[DVec3; 3]]) -> Vec<RaySet> {
 }
 
 /// Nanoseconds per ray of a report's set `k`.
-fn ns(report: &MethodReport, k: usize) -> f64 {
+pub fn ns(report: &MethodReport, k: usize) -> f64 {
     1e3 / report.sets[k].mrays_per_s
+}
+
+/// `methods` built on `triangles` and traced over `sets` on `threads`
+/// threads, rounds taking turns, `repeats` rounds (at least one); `step`
+/// is called after each round. The reports come finished, one per method.
+pub fn compare_on(
+    threads: usize,
+    triangles: &[[DVec3; 3]],
+    sets: &[RaySet],
+    methods: &[Method],
+    repeats: usize,
+    step: &mut dyn FnMut(),
+) -> Result<Vec<MethodReport>, String> {
+    let (mut reports, _) = on_threads_with_steps(
+        threads,
+        |tick| {
+            compare(
+                triangles,
+                sets,
+                methods,
+                repeats.max(1),
+                &indicatif::ProgressBar::hidden(),
+                tick,
+            )
+        },
+        step,
+    )
+    .map_err(|e| e.to_string())?;
+    for report in &mut reports {
+        report.finish(sets);
+    }
+    Ok(reports)
 }
 
 /// The steps [`measure_builders`] reports: one per round per mesh.
@@ -80,23 +113,8 @@ pub fn measure_builders(
             .filter(|b| runs_on(*b, triangles.len()))
             .map(|b| Method::Ours(b, NodePrecision::Single))
             .collect();
-        let (mut reports, _) = on_threads_with_steps(
-            1,
-            |tick| {
-                compare(
-                    triangles,
-                    &sets,
-                    &methods,
-                    repeats.max(1),
-                    &indicatif::ProgressBar::hidden(),
-                    tick,
-                )
-            },
-            step,
-        )
-        .map_err(|e| e.to_string())?;
-        for (method, report) in methods.iter().zip(&mut reports) {
-            report.finish(&sets);
+        let reports = compare_on(1, triangles, &sets, &methods, repeats, step)?;
+        for (method, report) in methods.iter().zip(&reports) {
             let Method::Ours(builder, _) = method else {
                 continue;
             };
@@ -254,33 +272,21 @@ pub fn measure_precision(
         .iter()
         .map(|&p| Method::Ours(CHART_BUILDER, p))
         .collect();
-    let (mut reports, _) = on_threads_with_steps(
-        1,
-        |tick| {
-            compare(
-                &big,
-                &sets,
-                &methods,
-                repeats.max(1),
-                &indicatif::ProgressBar::hidden(),
-                tick,
-            )
-        },
-        step,
-    )
-    .map_err(|e| e.to_string())?;
+    let reports = compare_on(1, &big, &sets, &methods, repeats, step)?;
     Ok(NodePrecision::ALL
         .iter()
-        .zip(&mut reports)
+        .zip(&reports)
         .zip(leaked)
         .map(|((precision, report), leaks)| {
-            report.finish(&sets);
+            let [leaks_bunny, leaks_moved, leaks_floor] = leaks;
             PrecisionRow {
                 precision: precision.name().to_string(),
                 primary_ns: ns(report, 0),
                 incoherent_ns: ns(report, 1),
                 edge_rays,
-                leaks,
+                leaks_bunny,
+                leaks_moved,
+                leaks_floor,
             }
         })
         .collect())

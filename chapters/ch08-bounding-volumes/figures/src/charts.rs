@@ -1,7 +1,7 @@
 //! Chapter 8's two charts, drawn from `book/src/figures/ch08/costs.csv` and
 //! `bounding.csv` (written by `raystep measure`): what one ray–primitive
 //! test costs against the sphere's, and what a bound saves.
-use raystep_figure::plots::row_label;
+use raystep_figure::plots::{dot, legend, note, row_label, row_of};
 use raystep_figure::plotters::coord::types::RangedCoordf64;
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -156,16 +156,9 @@ fn draw_costs(
     sphere_hit: f64,
     sphere_miss: f64,
 ) -> Result<(), ChartError> {
-    let (legend, plot) = area.split_vertically(40);
-    for (i, (name, colour)) in
-        [("rays that hit it", HIT), ("rays that miss it", MISS)]
-            .into_iter()
-            .enumerate()
-    {
-        let x = 230 + 260 * i as i32;
-        legend.draw(&Circle::new((x, 20), 6, colour.filled()))?;
-        legend.draw(&Text::new(name, (x + 14, 11), font(16.0)))?;
-    }
+    let (top, plot) = area.split_vertically(40);
+    let entries = [("rays that hit it", HIT), ("rays that miss it", MISS)];
+    legend(&top, &entries, 230, 260)?;
     let ratio = |r: &CostRow| {
         r.nanos
             / if r.rays == "hit" {
@@ -175,10 +168,7 @@ fn draw_costs(
             }
     };
     let x_range = ratio_range(rows.iter().map(ratio));
-    let n = primitives.len() as f64;
-    let slot = |name: &str| {
-        n - 1.0 - primitives.iter().position(|p| *p == name).unwrap_or(0) as f64
-    };
+    let slot = |name: &str| row_of(primitives, name);
     let mut c = named_rows(
         &plot,
         area,
@@ -190,10 +180,7 @@ fn draw_costs(
     for r in rows {
         let colour = if r.rays == "hit" { HIT } else { MISS };
         let dy = if r.rays == "hit" { -4 } else { 4 };
-        c.draw_series(std::iter::once(
-            EmptyElement::at((ratio(r).log10(), slot(&r.primitive)))
-                + Circle::new((0, dy), 6, colour.filled()),
-        ))?;
+        dot(&mut c, (ratio(r).log10(), slot(&r.primitive)), dy, &colour)?;
     }
     // ns per test at the right
     let right = x_range.end;
@@ -203,17 +190,8 @@ fn draw_costs(
                 .find(|r| r.primitive == *name && r.rays == rays)
                 .map_or("–".to_string(), |r| format!("{:.0}", r.nanos))
         };
-        let style = font(15.0)
-            .color(&BLACK)
-            .pos(Pos::new(HPos::Left, VPos::Center));
-        c.draw_series(std::iter::once(
-            EmptyElement::at((right, slot(name)))
-                + Text::new(
-                    format!("{} / {} ns", ns("hit"), ns("miss")),
-                    (12, 0),
-                    style,
-                ),
-        ))?;
+        let text = format!("{} / {} ns", ns("hit"), ns("miss"));
+        note(&mut c, (right, slot(name)), 12, text, (15.0, &BLACK))?;
     }
     Ok(())
 }
@@ -237,12 +215,9 @@ fn draw_bounding(
     rows: &[BoundingRow],
     objects: &[&str],
 ) -> Result<(), ChartError> {
-    let (legend, plot) = area.split_vertically(40);
-    for (i, (_, colour, name)) in BOUND_KINDS.iter().enumerate() {
-        let x = 60 + 270 * i as i32;
-        legend.draw(&Circle::new((x, 20), 6, colour.filled()))?;
-        legend.draw(&Text::new(*name, (x + 14, 11), font(16.0)))?;
-    }
+    let (top, plot) = area.split_vertically(40);
+    let entries = BOUND_KINDS.map(|(_, colour, name)| (name, colour));
+    legend(&top, &entries, 60, 270)?;
     let unbounded = |object: &str| {
         rows.iter()
             .find(|r| r.object == object && r.bound == "none")
@@ -254,10 +229,7 @@ fn draw_bounding(
         .filter_map(|r| Some((r, unbounded(&r.object)? / r.nanos)))
         .collect();
     let x_range = ratio_range(speed_ups.iter().map(|(_, s)| *s));
-    let n = objects.len() as f64;
-    let slot = |name: &str| {
-        n - 1.0 - objects.iter().position(|p| *p == name).unwrap_or(0) as f64
-    };
+    let slot = |name: &str| row_of(objects, name);
     let mut c = named_rows(
         &plot,
         area,
@@ -282,20 +254,9 @@ fn draw_bounding(
         else {
             continue;
         };
-        let style = font(15.0)
-            .color(&BLACK)
-            .pos(Pos::new(HPos::Left, VPos::Center));
-        c.draw_series(std::iter::once(
-            EmptyElement::at((right, slot(name)))
-                + Text::new(
-                    format!(
-                        "box: {:.0} % wasted",
-                        100.0 * boxed.wasted_of_bound_hits()
-                    ),
-                    (12, 0),
-                    style,
-                ),
-        ))?;
+        let wasted = 100.0 * boxed.wasted_of_bound_hits();
+        let text = format!("box: {wasted:.0} % wasted");
+        note(&mut c, (right, slot(name)), 12, text, (15.0, &BLACK))?;
     }
     Ok(())
 }

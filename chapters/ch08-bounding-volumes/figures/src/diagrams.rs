@@ -7,9 +7,10 @@ use raystep_render::{Progress, RenderOptions};
 
 use ch08::{
     Bound, BoundKind, DVec3, Interval, Primitive, Ray, Torus, TorusSolver,
-    Triangle, TriangleTest, sketch_bounds, sketch_shapes,
+    Triangle, TriangleTest,
 };
 
+use crate::sketch::{sketch_bounds, sketch_shapes};
 use crate::torus_figure;
 
 /// Every lecture figure of the chapter.
@@ -35,13 +36,8 @@ fn gallery() -> Figure {
         threads: None,
         progress: Progress::Never,
     };
-    let (image, _) = ch06::render(
-        &world,
-        &ch06::DEFAULT_STOP,
-        ch06::Fresnel::Exact,
-        &options,
-    )
-    .expect("the scene renders");
+    let image = ch06_figures::render_exact(&world, &options)
+        .expect("the scene renders");
     let (w, h) = (f64::from(image.width()), f64::from(image.height()));
     // a strip above the picture for the fast row's name, one below for
     // the slow row's

@@ -8,20 +8,22 @@ mod charts;
 mod diagrams;
 pub mod measurements;
 mod rows;
+mod sketch;
+mod tightness_measure;
 mod torus_figure;
 
-use raystep_figure::{Chapter, Measurement};
-use raystep_render::csv::to_csv;
+use raystep_figure::{Chapter, measurement, render_world};
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
 use raystep_world::Accelerate;
 
+pub use tightness_measure::{measure_tightness, tightness};
+
 /// What chapter 8 hands `raystep figures`, `measure`, `render` and `check`.
-pub const CHAPTER: Chapter = Chapter {
-    id: "ch08",
-    title: "Bounding volumes",
-    package: "ch08-bounding-volumes",
-    exercises: &[
+pub const CHAPTER: Chapter = Chapter::new(
+    "ch08-bounding-volumes",
+    "Bounding volumes",
+    &[
         "slab",
         "watertight",
         "torus_quartic",
@@ -29,87 +31,68 @@ pub const CHAPTER: Chapter = Chapter {
         "sah_split",
         "near_first",
     ],
-    figures: diagrams::all,
-    charts: &[
-        charts::costs_chart,
-        charts::bounding_chart,
-        bvh_charts::builders_chart,
-        bvh_charts::sah_chart,
-        bvh_charts::scaling_chart,
-        bvh_charts::precision_chart,
-        bvh_charts::zbuffer_chart,
-    ],
-    measurements: &[
-        Measurement {
-            what: "ch08 costs",
-            file: "costs.csv",
-            steps: measurements::cost_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&measurements::measure_costs(repeats, step)))
-            },
-        },
-        Measurement {
-            what: "ch08 bounding",
-            file: "bounding.csv",
-            steps: measurements::bounding_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&measurements::measure_bounding(repeats, step)?))
-            },
-        },
-        Measurement {
-            what: "ch08 BVH builders",
-            file: "bvh-builders.csv",
-            steps: bvh_measurements::builder_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&bvh_measurements::measure_builders(repeats, step)?))
-            },
-        },
-        Measurement {
-            what: "ch08 BVH scaling",
-            file: "bvh-scaling.csv",
-            steps: bvh_measurements::scaling_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&bvh_measurements::measure_scaling(repeats, step)?))
-            },
-        },
-        Measurement {
-            what: "ch08 BVH node precision",
-            file: "bvh-precision.csv",
-            steps: bvh_measurements::precision_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&bvh_measurements::measure_precision(repeats, step)?))
-            },
-        },
-        Measurement {
-            what: "ch08 BVH against the z-buffer",
-            file: "bvh-zbuffer.csv",
-            steps: bvh_measurements::zbuffer_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&bvh_measurements::measure_zbuffer(repeats, step)?))
-            },
-        },
-    ],
-    renderer: Some(render),
-};
+)
+.figures(diagrams::all)
+.charts(&[
+    charts::costs_chart,
+    charts::bounding_chart,
+    bvh_charts::builders_chart,
+    bvh_charts::sah_chart,
+    bvh_charts::scaling_chart,
+    bvh_charts::precision_chart,
+    bvh_charts::zbuffer_chart,
+])
+.measurements(&[
+    measurement!(
+        "ch08 costs",
+        "costs.csv",
+        measurements::cost_steps,
+        measurements::measure_costs
+    ),
+    measurement!(
+        "ch08 bounding",
+        "bounding.csv",
+        measurements::bounding_steps,
+        measurements::measure_bounding
+    ),
+    measurement!(
+        "ch08 BVH builders",
+        "bvh-builders.csv",
+        bvh_measurements::builder_steps,
+        bvh_measurements::measure_builders
+    ),
+    measurement!(
+        "ch08 BVH scaling",
+        "bvh-scaling.csv",
+        bvh_measurements::scaling_steps,
+        bvh_measurements::measure_scaling
+    ),
+    measurement!(
+        "ch08 BVH node precision",
+        "bvh-precision.csv",
+        bvh_measurements::precision_steps,
+        bvh_measurements::measure_precision
+    ),
+    measurement!(
+        "ch08 BVH against the z-buffer",
+        "bvh-zbuffer.csv",
+        bvh_measurements::zbuffer_steps,
+        bvh_measurements::measure_zbuffer
+    ),
+])
+.renderer(render);
 
 /// `raystep render` with chapter 8's primitives, traced by chapter 6's
 /// tracer (reflection, refraction, exact Fresnel) over the brute-force
-/// loop.
-fn render(
+/// loop; chapters 9 and 10 render with it too (`--accel grid`,
+/// `--accel kdtree` hand it their structures).
+pub fn render(
     scene: &Scene,
     file: &str,
     options: &RenderOptions,
     accelerate: Accelerate,
 ) -> Result<Image, String> {
-    let world = ch08::world(scene, file)
-        .map_err(|e| e.to_string())?
-        .accelerated(accelerate);
-    let (image, _) = ch06::render(
-        &world,
-        &ch06::DEFAULT_STOP,
-        ch06::Fresnel::Exact,
-        options,
-    )
-    .map_err(|e| e.to_string())?;
-    Ok(image)
+    render_world(ch08::world(scene, file), accelerate, |world| {
+        ch06_figures::render_exact(world, options)
+    })
 }

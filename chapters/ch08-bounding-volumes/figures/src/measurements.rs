@@ -13,11 +13,13 @@ use std::path::{Path, PathBuf};
 use ch08::{
     Aabb, AxisBox, Ball, Blobby, Bound, BoundKind, BoundingSphere, Cylinder,
     DVec3, Ellipsoid, Interval, Primitive, RandomLines, Ray, Saddle, Shape,
-    TIGHTNESS_SEED, Torus, TorusSolver, Triangle, TriangleMesh, TriangleTest,
-    measure_tightness, sampling_sphere,
+    Torus, TorusSolver, Triangle, TriangleMesh, TriangleTest,
 };
+use raystep_bench::{TIGHTNESS_SEED, sampling_sphere};
+use raystep_figure::as_jobs;
 use raystep_render::timing::Timing;
 
+use crate::measure_tightness;
 use crate::rows::{BoundingRow, CostRow};
 
 /// Rays per timed set: enough that one pass takes well over the clock's
@@ -229,15 +231,11 @@ pub fn measure_costs(repeats: usize, step: &mut dyn FnMut()) -> Vec<CostRow> {
             }
         }));
     }
-    let mut refs: Vec<&mut dyn FnMut()> = jobs
-        .iter_mut()
-        .map(|j| j.as_mut() as &mut dyn FnMut())
-        .collect();
     let timing = Timing {
         rounds: repeats,
         batch: 1,
     };
-    let ms = timing.median_ms(&mut refs, step);
+    let ms = timing.median_ms(&mut as_jobs(&mut jobs), step);
     let ns = |k: usize| ms[k] * 1e6 / RAYS as f64;
     let mut rows = Vec::new();
     let mut k = 0;
@@ -363,15 +361,11 @@ pub fn measure_bounding(
             }
         }));
     }
-    let mut refs: Vec<&mut dyn FnMut()> = jobs
-        .iter_mut()
-        .map(|j| j.as_mut() as &mut dyn FnMut())
-        .collect();
     let timing = Timing {
         rounds: repeats,
         batch: 1,
     };
-    let ms = timing.median_ms(&mut refs, step);
+    let ms = timing.median_ms(&mut as_jobs(&mut jobs), step);
     let mut rows = Vec::new();
     for (case, ms) in cases.iter().zip(ms) {
         let Case {

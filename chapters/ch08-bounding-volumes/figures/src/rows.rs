@@ -1,6 +1,7 @@
 //! The rows of chapter 8's two CSV files, as `raystep measure` writes them
 //! and the charts read them.
-use raystep_render::csv::{CsvRow, Record};
+use raystep_render::csv::{Decimals, Row};
+use serde::{Deserialize, Serialize};
 
 /// The groups of [`CostRow::group`]: the lecture's fast and slow
 /// primitives, and the two bounding volumes.
@@ -8,7 +9,7 @@ pub const GROUPS: [&str; 3] = ["fast", "slow", "bound"];
 
 /// One line of `costs.csv`: the median time of one ray–primitive test, for
 /// rays that hit it or rays that miss it.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CostRow {
     /// The primitive's name (`sphere`, `torus`, `bound: box`, …).
     pub primitive: String,
@@ -17,41 +18,27 @@ pub struct CostRow {
     /// `hit` or `miss`: which rays were timed.
     pub rays: String,
     /// Nanoseconds per test (median of the rounds).
+    #[serde(with = "Decimals::<2>")]
     pub nanos: f64,
 }
 
-impl CsvRow for CostRow {
-    const HEADER: &'static str = "primitive,group,rays,nanos";
-
-    fn to_line(&self) -> String {
-        format!(
-            "{},{},{},{:.2}",
-            self.primitive, self.group, self.rays, self.nanos
-        )
-    }
-
-    fn from_record(r: &Record) -> Result<CostRow, String> {
-        let group = r.text(1);
-        if !GROUPS.contains(&group) {
-            return Err(r.error(format!("unknown group `{group}`")));
+impl Row for CostRow {
+    fn check(&self) -> Result<(), String> {
+        let (group, rays) = (&self.group, &self.rays);
+        if !GROUPS.contains(&group.as_str()) {
+            return Err(format!("unknown group `{group}`"));
         }
-        let rays = r.text(2);
         if rays != "hit" && rays != "miss" {
-            return Err(r.error(format!("rays: `hit` or `miss`, got `{rays}`")));
+            return Err(format!("rays: `hit` or `miss`, got `{rays}`"));
         }
-        Ok(CostRow {
-            primitive: r.text(0).to_string(),
-            group: group.to_string(),
-            rays: rays.to_string(),
-            nanos: r.number(3, "nanos")?,
-        })
+        Ok(())
     }
 }
 
 /// One line of `bounding.csv`: an object tested with one kind of bound (or
 /// none), on one seeded set of random lines: how many rays hit the bound
 /// and the object (counted), and the time per ray (measured).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct BoundingRow {
     /// The object's name.
     pub object: String,
@@ -65,6 +52,7 @@ pub struct BoundingRow {
     /// Rays that hit the object.
     pub object_hits: u64,
     /// Nanoseconds per ray, bound test included (median of the rounds).
+    #[serde(with = "Decimals::<2>")]
     pub nanos: f64,
 }
 
@@ -76,35 +64,42 @@ impl BoundingRow {
     }
 }
 
-impl CsvRow for BoundingRow {
-    const HEADER: &'static str =
-        "object,bound,rays,bound_hits,object_hits,nanos";
-
-    fn to_line(&self) -> String {
-        let r = self;
-        format!(
-            "{},{},{},{},{},{:.2}",
-            r.object, r.bound, r.rays, r.bound_hits, r.object_hits, r.nanos
-        )
-    }
-
-    fn from_record(r: &Record) -> Result<BoundingRow, String> {
-        let row = BoundingRow {
-            object: r.text(0).to_string(),
-            bound: r.text(1).to_string(),
-            rays: r.count(2, "rays")?,
-            bound_hits: r.count(3, "bound_hits")?,
-            object_hits: r.count(4, "object_hits")?,
-            nanos: r.number(5, "nanos")?,
-        };
-        if row.rays == 0
-            || row.bound_hits > row.rays
-            || row.object_hits > row.bound_hits
+impl Row for BoundingRow {
+    fn check(&self) -> Result<(), String> {
+        if self.rays == 0
+            || self.bound_hits > self.rays
+            || self.object_hits > self.bound_hits
         {
             return Err(
-                r.error("expected 0 < rays, object_hits ≤ bound_hits ≤ rays")
+                "expected 0 < rays, object_hits ≤ bound_hits ≤ rays".into()
             );
         }
-        Ok(row)
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use raystep_figure::writes_back;
+    use raystep_render::csv::from_lines;
+
+    /// The committed files read and write back byte for byte: a new
+    /// measurement writes their format.
+    #[test]
+    fn the_committed_csv_files_write_back_unchanged() {
+        writes_back::<CostRow>("ch08", "costs.csv").unwrap();
+        writes_back::<BoundingRow>("ch08", "bounding.csv").unwrap();
+    }
+
+    #[test]
+    fn a_row_must_name_a_known_group_and_consistent_hits() {
+        let costs = from_lines::<CostRow>("box,fast,hit,1\nbox,odd,hit,1\n");
+        assert_eq!(costs.unwrap_err(), "line 3: unknown group `odd`");
+        let hits = from_lines::<BoundingRow>("ball,box,10,5,6,1.5\n");
+        assert_eq!(
+            hits.unwrap_err(),
+            "line 2: expected 0 < rays, object_hits ≤ bound_hits ≤ rays"
+        );
     }
 }

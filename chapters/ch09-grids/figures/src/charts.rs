@@ -3,11 +3,12 @@
 //! and brute force, and mailboxing.
 use raystep_figure::plots::{
     BLUE, GREEN, GREY, ORANGE, legend, line_with_dots, log_log, log_range,
-    number_label, row_label,
+    note, number_label, row_label,
 };
 use raystep_figure::plotters::prelude::*;
-use raystep_figure::plotters::style::text_anchor::{HPos, Pos, VPos};
-use raystep_figure::{ChartArea, ChartError, Figure, chart, font, measured};
+use raystep_figure::{
+    ChartArea, ChartError, DotRows, Figure, chart, font, measured,
+};
 
 use crate::rows::{BRUTE, BVH, CompareRow, GRID, MailboxRow, ResolutionRow};
 
@@ -123,49 +124,22 @@ fn dot_panel(
     value: &Value,
     names: bool,
 ) -> Result<(), ChartError> {
-    let n = SCENES.len() as f64;
+    let dots = DotRows {
+        names: &SCENES.map(|(_, name)| name),
+        names_width: 175,
+        colours: &METHODS.map(|(_, colour)| colour),
+        spacing: 6,
+        x_labels: 5,
+        x_label: &number_label,
+    };
     let x = log_range(rows.iter().map(value));
-    let mut c = ChartBuilder::on(panel)
-        .margin(10)
-        .margin_right(24)
-        .x_label_area_size(48)
-        .y_label_area_size(if names { 175 } else { 10 })
-        .build_cartesian_2d(x.log_scale(), -0.6..(n - 0.4))?;
-    c.configure_mesh()
-        .x_desc(desc)
-        .x_labels(5)
-        .x_label_formatter(&number_label)
-        .y_labels(SCENES.len())
-        .disable_y_mesh()
-        .y_label_formatter(&|y| {
-            let labels = SCENES.map(|(_, name)| if names { name } else { "" });
-            row_label(&labels, *y)
-        })
-        .label_style(font(14.0))
-        .axis_desc_style(font(15.0))
-        .light_line_style(WHITE)
-        .draw()?;
-    for (k, (scene, _)) in SCENES.iter().enumerate() {
-        let y = n - 1.0 - k as f64;
-        for (m, (method, colour)) in METHODS.iter().enumerate() {
-            let Some(r) = rows
-                .iter()
-                .find(|r| r.scene == *scene && r.method == *method)
-            else {
-                continue;
-            };
-            let v = value(r);
-            if v.is_nan() || v <= 0.0 {
-                continue; // brute force builds nothing
-            }
-            let dy = 6 * (m as i32 - 1);
-            c.draw_series(std::iter::once(
-                EmptyElement::at((v, y))
-                    + Circle::new((0, dy), 6, colour.filled()),
-            ))?;
-        }
-    }
-    Ok(())
+    dots.panel(panel, desc, x, names, &|k, m| {
+        let (scene, method) = (SCENES[k].0, METHODS[m].0);
+        let r = rows
+            .iter()
+            .find(|r| r.scene == scene && r.method == method)?;
+        Some((value(r), false))
+    })
 }
 
 /// The rows of the mailbox chart: scene and fill.
@@ -225,17 +199,8 @@ pub fn mailbox_chart() -> Result<Figure, ChartError> {
                         colour.mix(0.35).filled(),
                     )))?;
                 }
-                let style = font(14.0)
-                    .color(&GREY)
-                    .pos(Pos::new(HPos::Left, VPos::Center));
-                c.draw_series(std::iter::once(
-                    EmptyElement::at((max * 1.08, y))
-                        + Text::new(
-                            format!("{:.0} → {:.0} ns", r.ns_off, r.ns_on),
-                            (12, 0),
-                            style,
-                        ),
-                ))?;
+                let text = format!("{:.0} → {:.0} ns", r.ns_off, r.ns_on);
+                note(&mut c, (max * 1.08, y), 12, text, (14.0, &GREY))?;
             }
             Ok(())
         },

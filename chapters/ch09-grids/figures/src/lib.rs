@@ -5,57 +5,49 @@ mod charts;
 mod diagrams;
 pub mod measurements;
 pub mod rows;
+mod scene_files;
 
-use raystep_figure::{Chapter, Measurement};
-use raystep_render::csv::to_csv;
+use raystep_figure::{Chapter, measurement};
+
+pub use scene_files::{
+    STEM_SPHERES, STEM_STADIUM, stadium_toml, uniform_spheres_toml,
+};
 
 /// What chapter 9 hands `raystep figures`, `measure`, `render` and `check`.
-pub const CHAPTER: Chapter = Chapter {
-    id: "ch09",
-    title: "Grids",
-    package: "ch09-grids",
-    exercises: &["dda_setup", "walk"],
-    figures: diagrams::all,
-    charts: &[
-        charts::resolution_chart,
-        charts::compare_chart,
-        charts::mailbox_chart,
-    ],
-    measurements: &[
-        Measurement {
-            what: "ch09 grid resolution",
-            file: "grid-resolution.csv",
-            steps: measurements::resolution_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&measurements::measure_resolution(repeats, step)?))
-            },
-        },
-        Measurement {
-            what: "ch09 grid, BVH, brute force",
-            file: "grid-vs-bvh.csv",
-            steps: measurements::compare_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&measurements::measure_compare(repeats, step)?))
-            },
-        },
-        Measurement {
-            what: "ch09 mailboxing",
-            file: "grid-mailbox.csv",
-            steps: measurements::mailbox_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&measurements::measure_mailbox(repeats, step)?))
-            },
-        },
-        Measurement {
-            what: "ch09 stability",
-            file: "grid-stability.csv",
-            steps: measurements::stability_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&measurements::measure_stability(repeats, step)?))
-            },
-        },
-    ],
-    // chapter 8's shapes traced by chapter 6's tracer, as for chapter 8's
-    // scenes; `--accel grid` hands it this chapter's grid
-    renderer: ch08_figures::CHAPTER.renderer,
-};
+pub const CHAPTER: Chapter =
+    Chapter::new("ch09-grids", "Grids", &["dda_setup", "walk"])
+        .figures(diagrams::all)
+        .charts(&[
+            charts::resolution_chart,
+            charts::compare_chart,
+            charts::mailbox_chart,
+        ])
+        .measurements(&[
+            measurement!(
+                "ch09 grid resolution",
+                "grid-resolution.csv",
+                measurements::resolution_steps,
+                measurements::measure_resolution
+            ),
+            measurement!(
+                "ch09 grid, BVH, brute force",
+                "grid-vs-bvh.csv",
+                measurements::compare_steps,
+                measurements::measure_compare
+            ),
+            measurement!(
+                "ch09 mailboxing",
+                "grid-mailbox.csv",
+                measurements::mailbox_steps,
+                measurements::measure_mailbox
+            ),
+            measurement!(
+                "ch09 stability",
+                "grid-stability.csv",
+                measurements::stability_steps,
+                measurements::measure_stability
+            ),
+        ])
+        // chapter 8's shapes traced by chapter 6's tracer, as for chapter
+        // 8's scenes; `--accel grid` hands it this chapter's grid
+        .renderer(ch08_figures::render);

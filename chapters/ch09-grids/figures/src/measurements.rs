@@ -7,16 +7,16 @@
 use std::path::{Path, PathBuf};
 
 use ch08::{Builder, NodePrecision, TraceCounts};
+use ch08_figures::bvh_measurements::{compare_on, ns};
 use ch09::{
-    Aabb, DVec3, Fill, Grid, Interval, MeshGrid, Resolution, SCENE_SEED,
-    adversarial_rays, disagreements, rule_cells, stability_scenes, stadium,
-    uniform_triangles,
+    Aabb, DVec3, Fill, Grid, Interval, MeshGrid, Resolution, rule_cells,
 };
 use raystep_bench::{
-    GridSpec, Method, MethodReport, RaySet, compare, incoherent,
-    on_threads, on_threads_with_steps, primary,
+    GridSpec, Method, MethodReport, RaySet, SCENE_SEED, incoherent, on_threads,
+    primary, stadium, uniform_triangles,
 };
 use raystep_core::{Camera, Ray};
+use raystep_stability::{adversarial_rays, disagreements, stability_scenes};
 
 use crate::rows::{
     BRUTE, BVH, CompareRow, GRID, MailboxRow, ResolutionRow, StabilityRow,
@@ -114,23 +114,9 @@ pub fn run(
     repeats: usize,
     step: &mut dyn FnMut(),
 ) -> Result<Vec<MethodReport>, String> {
-    let (mut reports, _) = on_threads_with_steps(
-        1,
-        |tick| {
-            compare(
-                &scene.triangles,
-                sets,
-                methods,
-                repeats.max(1),
-                &indicatif::ProgressBar::hidden(),
-                tick,
-            )
-        },
-        step,
-    )
-    .map_err(|e| e.to_string())?;
-    for report in &mut reports {
-        report.finish(sets);
+    let reports =
+        compare_on(1, &scene.triangles, sets, methods, repeats, step)?;
+    for report in &reports {
         // every method answers every ray as the first does
         for set in &report.sets {
             if set.disagreements > 0 {
@@ -146,11 +132,6 @@ pub fn run(
         }
     }
     Ok(reports)
-}
-
-/// Nanoseconds per ray of set `k`.
-pub fn ns(report: &MethodReport, k: usize) -> f64 {
-    1e3 / report.sets[k].mrays_per_s
 }
 
 /// Nodes (or cells) and triangle tests per ray of set `k`.

@@ -1,19 +1,11 @@
 //! The rows of chapter 9's CSV files (written by `raystep measure`, read
 //! by the charts): the resolution sweep, the grid beside the hierarchy
 //! and brute force, mailboxing, and the stability catalogue.
-use raystep_render::csv::{CsvRow, Record};
-
-/// Times must be positive (false for NaN too).
-fn positive(r: &Record, values: &[f64]) -> Result<(), String> {
-    if values.iter().all(|&x| x > 0.0) {
-        Ok(())
-    } else {
-        Err(r.error("times and sizes must be positive"))
-    }
-}
+use raystep_render::csv::{Decimals, Flag, Row, positive};
+use serde::{Deserialize, Serialize};
 
 /// One grid resolution on one scene (`grid-resolution.csv`).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ResolutionRow {
     /// `uniform-10000`, `bunny`, `stadium`.
     pub scene: String,
@@ -22,57 +14,32 @@ pub struct ResolutionRow {
     /// Cells along the longest axis.
     pub longest: u64,
     /// Is this the rule's choice (3·∛N)?
+    #[serde(with = "Flag")]
     pub rule: bool,
     /// Cells in all.
     pub cells: u64,
     /// Milliseconds to build.
+    #[serde(with = "Decimals::<3>")]
     pub build_ms: f64,
     /// Bytes of the lists, their starts and the triangles.
     pub bytes: u64,
     /// Nanoseconds per camera ray (closest hit, one thread, median).
+    #[serde(with = "Decimals::<1>")]
     pub primary_ns: f64,
     /// Cells visited per camera ray.
+    #[serde(with = "Decimals::<2>")]
     pub primary_cells: f64,
     /// Triangle tests per camera ray.
+    #[serde(with = "Decimals::<2>")]
     pub primary_tests: f64,
 }
 
-impl CsvRow for ResolutionRow {
-    const HEADER: &'static str = "scene,triangles,longest,rule,cells,\
-        build_ms,bytes,primary_ns,primary_cells,primary_tests";
-
-    fn to_line(&self) -> String {
-        let r = self;
-        format!(
-            "{},{},{},{},{},{:.3},{},{:.1},{:.2},{:.2}",
-            r.scene,
-            r.triangles,
-            r.longest,
-            u8::from(r.rule),
-            r.cells,
-            r.build_ms,
-            r.bytes,
-            r.primary_ns,
-            r.primary_cells,
-            r.primary_tests
+impl Row for ResolutionRow {
+    fn check(&self) -> Result<(), String> {
+        positive(
+            &[self.build_ms, self.primary_ns, self.bytes as f64],
+            "times and sizes",
         )
-    }
-
-    fn from_record(r: &Record) -> Result<ResolutionRow, String> {
-        let row = ResolutionRow {
-            scene: r.text(0).to_string(),
-            triangles: r.count(1, "triangles")?,
-            longest: r.count(2, "longest")?,
-            rule: r.count(3, "rule")? == 1,
-            cells: r.count(4, "cells")?,
-            build_ms: r.number(5, "build_ms")?,
-            bytes: r.count(6, "bytes")?,
-            primary_ns: r.number(7, "primary_ns")?,
-            primary_cells: r.number(8, "primary_cells")?,
-            primary_tests: r.number(9, "primary_tests")?,
-        };
-        positive(r, &[row.build_ms, row.primary_ns, row.bytes as f64])?;
-        Ok(row)
     }
 }
 
@@ -84,7 +51,7 @@ pub const BVH: &str = "BVH";
 pub const GRID: &str = "grid";
 
 /// One method on one scene (`grid-vs-bvh.csv`).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CompareRow {
     /// The scene.
     pub scene: String,
@@ -93,63 +60,39 @@ pub struct CompareRow {
     /// [`BRUTE`], [`BVH`] or [`GRID`].
     pub method: String,
     /// Milliseconds to build (0 for brute force).
+    #[serde(with = "Decimals::<3>")]
     pub build_ms: f64,
     /// Bytes of the structure and the triangles it reads.
     pub bytes: u64,
     /// Nanoseconds per camera ray.
+    #[serde(with = "Decimals::<1>")]
     pub primary_ns: f64,
     /// Nanoseconds per incoherent ray.
+    #[serde(with = "Decimals::<1>")]
     pub incoherent_ns: f64,
     /// Node (or cell) visits plus triangle tests per camera ray.
+    #[serde(with = "Decimals::<2>")]
     pub primary_work: f64,
     /// The same per incoherent ray.
+    #[serde(with = "Decimals::<2>")]
     pub incoherent_work: f64,
 }
 
-impl CsvRow for CompareRow {
-    const HEADER: &'static str = "scene,triangles,method,build_ms,bytes,\
-        primary_ns,incoherent_ns,primary_work,incoherent_work";
-
-    fn to_line(&self) -> String {
-        let r = self;
-        format!(
-            "{},{},{},{:.3},{},{:.1},{:.1},{:.2},{:.2}",
-            r.scene,
-            r.triangles,
-            r.method,
-            r.build_ms,
-            r.bytes,
-            r.primary_ns,
-            r.incoherent_ns,
-            r.primary_work,
-            r.incoherent_work
-        )
-    }
-
-    fn from_record(r: &Record) -> Result<CompareRow, String> {
-        let method = r.text(2);
-        if ![BRUTE, BVH, GRID].contains(&method) {
-            return Err(r.error(format!("unknown method `{method}`")));
+impl Row for CompareRow {
+    fn check(&self) -> Result<(), String> {
+        if ![BRUTE, BVH, GRID].contains(&self.method.as_str()) {
+            return Err(format!("unknown method `{}`", self.method));
         }
-        let row = CompareRow {
-            scene: r.text(0).to_string(),
-            triangles: r.count(1, "triangles")?,
-            method: method.to_string(),
-            build_ms: r.number(3, "build_ms")?,
-            bytes: r.count(4, "bytes")?,
-            primary_ns: r.number(5, "primary_ns")?,
-            incoherent_ns: r.number(6, "incoherent_ns")?,
-            primary_work: r.number(7, "primary_work")?,
-            incoherent_work: r.number(8, "incoherent_work")?,
-        };
-        positive(r, &[row.primary_ns, row.incoherent_ns, row.bytes as f64])?;
-        Ok(row)
+        positive(
+            &[self.primary_ns, self.incoherent_ns, self.bytes as f64],
+            "times and sizes",
+        )
     }
 }
 
 /// One fill with and without the mailbox on one scene
 /// (`grid-mailbox.csv`).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct MailboxRow {
     /// The scene.
     pub scene: String,
@@ -158,59 +101,34 @@ pub struct MailboxRow {
     /// Entries in all cell lists.
     pub entries: u64,
     /// Triangle tests per incoherent ray, mailbox off.
+    #[serde(with = "Decimals::<3>")]
     pub tests_off: f64,
     /// Of them, tests of a triangle the ray had already tested.
+    #[serde(with = "Decimals::<3>")]
     pub repeats_off: f64,
     /// Triangle tests per incoherent ray, mailbox on.
+    #[serde(with = "Decimals::<3>")]
     pub tests_on: f64,
     /// Of them, repeats (the hashed mailbox forgets a few).
+    #[serde(with = "Decimals::<3>")]
     pub repeats_on: f64,
     /// Nanoseconds per incoherent ray, mailbox off.
+    #[serde(with = "Decimals::<1>")]
     pub ns_off: f64,
     /// Nanoseconds per incoherent ray, mailbox on.
+    #[serde(with = "Decimals::<1>")]
     pub ns_on: f64,
 }
 
-impl CsvRow for MailboxRow {
-    const HEADER: &'static str = "scene,fill,entries,tests_off,repeats_off,\
-        tests_on,repeats_on,ns_off,ns_on";
-
-    fn to_line(&self) -> String {
-        let r = self;
-        format!(
-            "{},{},{},{:.3},{:.3},{:.3},{:.3},{:.1},{:.1}",
-            r.scene,
-            r.fill,
-            r.entries,
-            r.tests_off,
-            r.repeats_off,
-            r.tests_on,
-            r.repeats_on,
-            r.ns_off,
-            r.ns_on
-        )
-    }
-
-    fn from_record(r: &Record) -> Result<MailboxRow, String> {
-        let row = MailboxRow {
-            scene: r.text(0).to_string(),
-            fill: r.text(1).to_string(),
-            entries: r.count(2, "entries")?,
-            tests_off: r.number(3, "tests_off")?,
-            repeats_off: r.number(4, "repeats_off")?,
-            tests_on: r.number(5, "tests_on")?,
-            repeats_on: r.number(6, "repeats_on")?,
-            ns_off: r.number(7, "ns_off")?,
-            ns_on: r.number(8, "ns_on")?,
-        };
-        positive(r, &[row.ns_off, row.ns_on])?;
-        Ok(row)
+impl Row for MailboxRow {
+    fn check(&self) -> Result<(), String> {
+        positive(&[self.ns_off, self.ns_on], "times and sizes")
     }
 }
 
 /// One scene × one kind of dangerous ray (`grid-stability.csv`): counted,
 /// not timed.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct StabilityRow {
     /// The scene.
     pub scene: String,
@@ -219,30 +137,27 @@ pub struct StabilityRow {
     /// Rays asked (each: closest hit, two any-hit questions).
     pub rays: u64,
     /// Answers that differ from brute force, mailbox on.
+    #[serde(rename = "disagreements_mailbox")]
     pub wrong_mailbox: u64,
     /// The same, mailbox off.
+    #[serde(rename = "disagreements_no_mailbox")]
     pub wrong_plain: u64,
 }
 
-impl CsvRow for StabilityRow {
-    const HEADER: &'static str =
-        "scene,case,rays,disagreements_mailbox,disagreements_no_mailbox";
+impl Row for StabilityRow {}
 
-    fn to_line(&self) -> String {
-        let r = self;
-        format!(
-            "{},{},{},{},{}",
-            r.scene, r.case, r.rays, r.wrong_mailbox, r.wrong_plain
-        )
-    }
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use raystep_figure::writes_back;
 
-    fn from_record(r: &Record) -> Result<StabilityRow, String> {
-        Ok(StabilityRow {
-            scene: r.text(0).to_string(),
-            case: r.text(1).to_string(),
-            rays: r.count(2, "rays")?,
-            wrong_mailbox: r.count(3, "disagreements_mailbox")?,
-            wrong_plain: r.count(4, "disagreements_no_mailbox")?,
-        })
+    /// The committed files read and write back byte for byte: a new
+    /// measurement writes their format.
+    #[test]
+    fn the_committed_csv_files_write_back_unchanged() {
+        writes_back::<ResolutionRow>("ch09", "grid-resolution.csv").unwrap();
+        writes_back::<CompareRow>("ch09", "grid-vs-bvh.csv").unwrap();
+        writes_back::<MailboxRow>("ch09", "grid-mailbox.csv").unwrap();
+        writes_back::<StabilityRow>("ch09", "grid-stability.csv").unwrap();
     }
 }

@@ -3,10 +3,12 @@
 //! needs (totals for 1, 10³ and 10⁶ rays; what each costs).
 use raystep_figure::plots::{
     BLUE, GREEN, GREY, ORANGE, legend, line_with_dots, log_log, log_range,
-    number_label, padded_log_range, row_label,
+    number_label, padded_log_range,
 };
 use raystep_figure::plotters::prelude::*;
-use raystep_figure::{ChartArea, ChartError, Figure, chart, font, measured};
+use raystep_figure::{
+    ChartArea, ChartError, DotRows, Figure, chart, font, measured,
+};
 
 use crate::rows::{BuildRow, StructureRow};
 
@@ -120,56 +122,22 @@ fn dot_panel(
     value: &Value,
     names: bool,
 ) -> Result<(), ChartError> {
-    let n = FAMILIES.len() as f64;
+    let dots = DotRows {
+        names: &FAMILIES.map(|(_, name)| name),
+        names_width: 200,
+        colours: &METHODS.map(|(_, _, colour)| colour),
+        spacing: 8,
+        x_labels: 4,
+        x_label: &small_label,
+    };
     let x = padded_log_range(rows.iter().map(value).filter(|v| *v > 0.0), 3.0);
-    let mut c = ChartBuilder::on(panel)
-        .margin(10)
-        .margin_right(24)
-        .x_label_area_size(48)
-        .y_label_area_size(if names { 200 } else { 10 })
-        .build_cartesian_2d(x.log_scale(), -0.6..(n - 0.4))?;
-    c.configure_mesh()
-        .x_desc(desc)
-        .x_labels(4)
-        .x_label_formatter(&small_label)
-        .y_labels(FAMILIES.len())
-        .disable_y_mesh()
-        .y_label_formatter(&|y| {
-            let labels =
-                FAMILIES.map(|(_, name)| if names { name } else { "" });
-            row_label(&labels, *y)
-        })
-        .label_style(font(14.0))
-        .axis_desc_style(font(15.0))
-        .light_line_style(WHITE)
-        .draw()?;
-    for (k, (scene, _)) in FAMILIES.iter().enumerate() {
-        let y = n - 1.0 - k as f64;
-        for (m, (method, _, colour)) in METHODS.iter().enumerate() {
-            let Some(r) = rows
-                .iter()
-                .find(|r| r.scene == *scene && r.method == *method)
-            else {
-                continue;
-            };
-            let v = value(r);
-            if v.is_nan() || v <= 0.0 {
-                continue; // brute force builds nothing
-            }
-            let dy = 4 * (2 * m as i32 - 3);
-            c.draw_series(std::iter::once(
-                EmptyElement::at((v, y))
-                    + Circle::new((0, dy), 6, colour.filled()),
-            ))?;
-            if r.chosen {
-                c.draw_series(std::iter::once(
-                    EmptyElement::at((v, y))
-                        + Circle::new((0, dy), 11, BLACK.stroke_width(2)),
-                ))?;
-            }
-        }
-    }
-    Ok(())
+    dots.panel(panel, desc, x, names, &|k, m| {
+        let (scene, method) = (FAMILIES[k].0, METHODS[m].0);
+        let r = rows
+            .iter()
+            .find(|r| r.scene == scene && r.method == method)?;
+        Some((value(r), r.chosen))
+    })
 }
 
 fn method_legend(top: &ChartArea) -> Result<(), ChartError> {

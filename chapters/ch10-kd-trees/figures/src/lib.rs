@@ -6,56 +6,46 @@ mod diagrams;
 pub mod measurements;
 pub mod rows;
 
-use raystep_figure::{Chapter, Measurement};
-use raystep_render::csv::to_csv;
+use raystep_figure::{Chapter, measurement};
 
 /// What chapter 10 hands `raystep figures`, `measure`, `render` and `check`.
-pub const CHAPTER: Chapter = Chapter {
-    id: "ch10",
-    title: "kd-trees",
-    package: "ch10-kd-trees",
-    exercises: &["split_cost", "traversal_step"],
-    figures: diagrams::all,
-    charts: &[
-        charts::build_chart,
-        charts::which_chart,
-        charts::costs_chart,
-    ],
-    measurements: &[
-        Measurement {
-            what: "ch10 kd-tree builds",
-            file: "kd-build.csv",
-            steps: measurements::build_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&measurements::measure_build(repeats, step)?))
-            },
-        },
-        Measurement {
-            what: "ch10 kd-tree variants",
-            file: "kd-variants.csv",
-            steps: measurements::variants_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&measurements::measure_variants(repeats, step)?))
-            },
-        },
-        Measurement {
-            what: "ch10 which structure",
-            file: "which-structure.csv",
-            steps: measurements::structures_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&measurements::measure_structures(repeats, step)?))
-            },
-        },
-        Measurement {
-            what: "ch10 stability",
-            file: "kd-stability.csv",
-            steps: measurements::stability_steps,
-            run: |repeats, step| {
-                Ok(to_csv(&measurements::measure_stability(repeats, step)?))
-            },
-        },
-    ],
-    // chapter 8's shapes traced by chapter 6's tracer, as for chapters 8
-    // and 9; `--accel kdtree` hands it this chapter's tree
-    renderer: ch08_figures::CHAPTER.renderer,
-};
+pub const CHAPTER: Chapter = Chapter::new(
+    "ch10-kd-trees",
+    "kd-trees",
+    &["split_cost", "traversal_step"],
+)
+.figures(diagrams::all)
+.charts(&[
+    charts::build_chart,
+    charts::which_chart,
+    charts::costs_chart,
+])
+.measurements(&[
+    measurement!(
+        "ch10 kd-tree builds",
+        "kd-build.csv",
+        measurements::build_steps,
+        measurements::measure_build
+    ),
+    measurement!(
+        "ch10 kd-tree variants",
+        "kd-variants.csv",
+        measurements::variants_steps,
+        measurements::measure_variants
+    ),
+    measurement!(
+        "ch10 which structure",
+        "which-structure.csv",
+        measurements::structures_steps,
+        measurements::measure_structures
+    ),
+    measurement!(
+        "ch10 stability",
+        "kd-stability.csv",
+        measurements::stability_steps,
+        measurements::measure_stability
+    ),
+])
+// chapter 8's shapes traced by chapter 6's tracer, as for chapters 8
+// and 9; `--accel kdtree` hands it this chapter's tree
+.renderer(ch08_figures::render);

@@ -8,18 +8,21 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use ch08::{BoundingSphere, Builder};
-use ch09::{SCENE_SEED, stadium, uniform_triangles};
+use ch08_figures::bvh_measurements::ns;
 use ch09_figures::measurements::{
-    INCOHERENT, bounds, bunny, ns, run, scene, stadium_camera,
+    INCOHERENT, bounds, bunny, run, scene, stadium_camera,
 };
 use ch10::{
     Aabb, Accelerator, Clip, DVec3, Interval, KdBuilder, KdCosts, KdTree,
-    Object, Ray, Structure, choose, kd_disagreements, kd_rays, kd_scenes,
+    Object, Ray, Structure, choose,
 };
 use raystep_bench::{
-    KdSpec, Method, incoherent, on_threads, on_threads_with_steps,
+    KdSpec, Method, SCENE_SEED, incoherent, on_threads, on_threads_with_steps,
+    stadium, uniform_triangles,
 };
+use raystep_figure::as_jobs;
 use raystep_render::timing::Timing;
+use raystep_stability::{kd_disagreements, kd_rays, kd_scenes};
 
 use crate::rows::{BuildRow, StabilityRow, StructureRow, VariantRow};
 
@@ -74,15 +77,11 @@ pub fn measure_build(
                 }) as Box<dyn FnMut()>
             })
             .collect();
-        let mut refs: Vec<&mut dyn FnMut()> = jobs
-            .iter_mut()
-            .map(|j| j.as_mut() as &mut dyn FnMut())
-            .collect();
         let ms = Timing {
             rounds: repeats.max(1),
             batch: 1,
         }
-        .median_ms(&mut refs, &mut *step);
+        .median_ms(&mut as_jobs(&mut jobs), &mut *step);
         step();
         for (&(name, builder, clip), ms) in BUILDERS.iter().zip(ms) {
             let s = KdTree::for_triangles(&triangles, builder, costs, clip)
@@ -255,11 +254,11 @@ fn family(name: &'static str, objects: Vec<Object>) -> Family {
             .map(|r| r.to_ray())
             .collect()
     } else {
-        ch08::camera_rays(BoundingSphere::around_box(&b), FAMILY_SIZE)
+        raystep_bench::camera_rays(BoundingSphere::around_box(&b), FAMILY_SIZE)
     };
     Family {
         name,
-        incoherent: ch08::incoherent_rays(b, FAMILY_INCOHERENT, 1),
+        incoherent: raystep_bench::incoherent_rays(b, FAMILY_INCOHERENT, 1),
         primary,
         objects,
     }
@@ -533,7 +532,10 @@ pub fn measure_stability(
                         scene: scene.name.to_string(),
                         case: name.to_string(),
                         rays: rays.len() as u64,
-                        wrong: [0, 1, 2, 3].map(|k| wrong[k] as u64),
+                        wrong_sah: wrong[0] as u64,
+                        wrong_no_mailbox: wrong[1] as u64,
+                        wrong_median: wrong[2] as u64,
+                        wrong_sah_pbrt: wrong[3] as u64,
                     });
                 }
                 tick();

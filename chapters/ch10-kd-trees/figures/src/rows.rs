@@ -2,62 +2,36 @@
 //! by the charts and the book): build times, the tree variants on the
 //! benchmark's rays, which structure a scene needs, and the stability
 //! catalogue.
-use raystep_render::csv::{CsvRow, Record};
-
-/// Times must be positive (false for NaN too).
-fn positive(r: &Record, values: &[f64]) -> Result<(), String> {
-    if values.iter().all(|&x| x > 0.0) {
-        Ok(())
-    } else {
-        Err(r.error("times and sizes must be positive"))
-    }
-}
+use raystep_render::csv::{Decimals, Flag, Row, positive};
+use serde::{Deserialize, Serialize};
 
 /// One builder on one scene size (`kd-build.csv`).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct BuildRow {
     /// `median`, `SAH sorting`, `SAH events`, `SAH events perfect`.
     pub builder: String,
     /// Triangles.
     pub triangles: u64,
     /// Milliseconds to build (median of the rounds).
+    #[serde(with = "Decimals::<3>")]
     pub build_ms: f64,
     /// Nodes.
     pub nodes: u64,
     /// Entries in the leaves.
     pub entries: u64,
     /// The tree's SAH cost.
+    #[serde(with = "Decimals::<2>")]
     pub sah_cost: f64,
 }
 
-impl CsvRow for BuildRow {
-    const HEADER: &'static str =
-        "builder,triangles,build_ms,nodes,entries,sah_cost";
-
-    fn to_line(&self) -> String {
-        let r = self;
-        format!(
-            "{},{},{:.3},{},{},{:.2}",
-            r.builder, r.triangles, r.build_ms, r.nodes, r.entries, r.sah_cost
-        )
-    }
-
-    fn from_record(r: &Record) -> Result<BuildRow, String> {
-        let row = BuildRow {
-            builder: r.text(0).to_string(),
-            triangles: r.count(1, "triangles")?,
-            build_ms: r.number(2, "build_ms")?,
-            nodes: r.count(3, "nodes")?,
-            entries: r.count(4, "entries")?,
-            sah_cost: r.number(5, "sah_cost")?,
-        };
-        positive(r, &[row.build_ms, row.triangles as f64])?;
-        Ok(row)
+impl Row for BuildRow {
+    fn check(&self) -> Result<(), String> {
+        positive(&[self.build_ms, self.triangles as f64], "times and sizes")
     }
 }
 
 /// One tree variant on one mesh, on the benchmark's rays (`kd-variants.csv`).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct VariantRow {
     /// `bunny`, `bunny-235k`, `uniform-10000`.
     pub scene: String,
@@ -65,65 +39,42 @@ pub struct VariantRow {
     /// depth 1.3`, `median`.
     pub variant: String,
     /// Milliseconds to build.
+    #[serde(with = "Decimals::<3>")]
     pub build_ms: f64,
     /// Bytes of nodes, lists and triangles.
     pub bytes: u64,
     /// Nanoseconds per camera ray, per incoherent ray.
+    #[serde(with = "Decimals::<1>")]
     pub primary_ns: f64,
     /// See `primary_ns`.
+    #[serde(with = "Decimals::<1>")]
     pub incoherent_ns: f64,
     /// Nodes reached per camera ray, and triangle tests.
+    #[serde(with = "Decimals::<2>")]
     pub primary_nodes: f64,
     /// See `primary_nodes`.
+    #[serde(with = "Decimals::<2>")]
     pub primary_tests: f64,
     /// Nodes reached per incoherent ray, and triangle tests.
+    #[serde(with = "Decimals::<2>")]
     pub incoherent_nodes: f64,
     /// See `incoherent_nodes`.
+    #[serde(with = "Decimals::<2>")]
     pub incoherent_tests: f64,
 }
 
-impl CsvRow for VariantRow {
-    const HEADER: &'static str = "scene,variant,build_ms,bytes,primary_ns,\
-        incoherent_ns,primary_nodes,primary_tests,incoherent_nodes,incoherent_tests";
-
-    fn to_line(&self) -> String {
-        let r = self;
-        format!(
-            "{},{},{:.3},{},{:.1},{:.1},{:.2},{:.2},{:.2},{:.2}",
-            r.scene,
-            r.variant,
-            r.build_ms,
-            r.bytes,
-            r.primary_ns,
-            r.incoherent_ns,
-            r.primary_nodes,
-            r.primary_tests,
-            r.incoherent_nodes,
-            r.incoherent_tests
+impl Row for VariantRow {
+    fn check(&self) -> Result<(), String> {
+        positive(
+            &[self.build_ms, self.primary_ns, self.incoherent_ns],
+            "times and sizes",
         )
-    }
-
-    fn from_record(r: &Record) -> Result<VariantRow, String> {
-        let row = VariantRow {
-            scene: r.text(0).to_string(),
-            variant: r.text(1).to_string(),
-            build_ms: r.number(2, "build_ms")?,
-            bytes: r.count(3, "bytes")?,
-            primary_ns: r.number(4, "primary_ns")?,
-            incoherent_ns: r.number(5, "incoherent_ns")?,
-            primary_nodes: r.number(6, "primary_nodes")?,
-            primary_tests: r.number(7, "primary_tests")?,
-            incoherent_nodes: r.number(8, "incoherent_nodes")?,
-            incoherent_tests: r.number(9, "incoherent_tests")?,
-        };
-        positive(r, &[row.build_ms, row.primary_ns, row.incoherent_ns])?;
-        Ok(row)
     }
 }
 
 /// One structure on one scene family, on the tracers' own path (objects,
 /// double precision): `which-structure.csv`.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct StructureRow {
     /// The family: `handful`, `slow`, `uniform-10000`, ...
     pub scene: String,
@@ -132,14 +83,18 @@ pub struct StructureRow {
     /// `brute`, `bvh`, `grid`, `kdtree`.
     pub method: String,
     /// Does chapter 10's rule pick this structure for this scene?
+    #[serde(with = "Flag")]
     pub chosen: bool,
     /// Milliseconds to build (0 for brute force).
+    #[serde(with = "Decimals::<3>")]
     pub build_ms: f64,
     /// Bytes of the structure (not the objects; 0 for brute force).
     pub bytes: u64,
     /// Nanoseconds per camera ray, per incoherent ray (closest hit).
+    #[serde(with = "Decimals::<1>")]
     pub primary_ns: f64,
     /// See `primary_ns`.
+    #[serde(with = "Decimals::<1>")]
     pub incoherent_ns: f64,
     /// Answers unlike brute force's, on the rays brute force traced.
     pub disagreements: u64,
@@ -154,46 +109,15 @@ impl StructureRow {
     }
 }
 
-impl CsvRow for StructureRow {
-    const HEADER: &'static str = "scene,objects,method,chosen,build_ms,bytes,\
-        primary_ns,incoherent_ns,disagreements";
-
-    fn to_line(&self) -> String {
-        let r = self;
-        format!(
-            "{},{},{},{},{:.3},{},{:.1},{:.1},{}",
-            r.scene,
-            r.objects,
-            r.method,
-            u8::from(r.chosen),
-            r.build_ms,
-            r.bytes,
-            r.primary_ns,
-            r.incoherent_ns,
-            r.disagreements
-        )
-    }
-
-    fn from_record(r: &Record) -> Result<StructureRow, String> {
-        let row = StructureRow {
-            scene: r.text(0).to_string(),
-            objects: r.count(1, "objects")?,
-            method: r.text(2).to_string(),
-            chosen: r.count(3, "chosen")? == 1,
-            build_ms: r.number(4, "build_ms")?,
-            bytes: r.count(5, "bytes")?,
-            primary_ns: r.number(6, "primary_ns")?,
-            incoherent_ns: r.number(7, "incoherent_ns")?,
-            disagreements: r.count(8, "disagreements")?,
-        };
-        positive(r, &[row.primary_ns, row.incoherent_ns])?;
-        Ok(row)
+impl Row for StructureRow {
+    fn check(&self) -> Result<(), String> {
+        positive(&[self.primary_ns, self.incoherent_ns], "times and sizes")
     }
 }
 
 /// One kind of dangerous ray on one scene: disagreements with brute force
 /// per tree (`kd-stability.csv`).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct StabilityRow {
     /// The scene.
     pub scene: String,
@@ -201,39 +125,30 @@ pub struct StabilityRow {
     pub case: String,
     /// How many rays.
     pub rays: u64,
-    /// Wrong answers: SAH (chosen costs), the same without a mailbox, the
-    /// median tree, SAH with pbrt's costs.
-    pub wrong: [u64; 4],
+    /// Wrong answers of the SAH tree (chosen costs)...
+    pub wrong_sah: u64,
+    /// ... of the same without a mailbox...
+    pub wrong_no_mailbox: u64,
+    /// ... of the median tree...
+    pub wrong_median: u64,
+    /// ... and of SAH with pbrt's costs.
+    pub wrong_sah_pbrt: u64,
 }
 
-impl CsvRow for StabilityRow {
-    const HEADER: &'static str = "scene,case,rays,wrong_sah,wrong_no_mailbox,wrong_median,wrong_sah_pbrt";
+impl Row for StabilityRow {}
 
-    fn to_line(&self) -> String {
-        let r = self;
-        format!(
-            "{},{},{},{},{},{},{}",
-            r.scene,
-            r.case,
-            r.rays,
-            r.wrong[0],
-            r.wrong[1],
-            r.wrong[2],
-            r.wrong[3]
-        )
-    }
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use raystep_figure::writes_back;
 
-    fn from_record(r: &Record) -> Result<StabilityRow, String> {
-        Ok(StabilityRow {
-            scene: r.text(0).to_string(),
-            case: r.text(1).to_string(),
-            rays: r.count(2, "rays")?,
-            wrong: [
-                r.count(3, "wrong_sah")?,
-                r.count(4, "wrong_no_mailbox")?,
-                r.count(5, "wrong_median")?,
-                r.count(6, "wrong_sah_pbrt")?,
-            ],
-        })
+    /// The committed files read and write back byte for byte: a new
+    /// measurement writes their format.
+    #[test]
+    fn the_committed_csv_files_write_back_unchanged() {
+        writes_back::<BuildRow>("ch10", "kd-build.csv").unwrap();
+        writes_back::<VariantRow>("ch10", "kd-variants.csv").unwrap();
+        writes_back::<StructureRow>("ch10", "which-structure.csv").unwrap();
+        writes_back::<StabilityRow>("ch10", "kd-stability.csv").unwrap();
     }
 }

@@ -74,7 +74,7 @@ pub fn steps_chart() -> Result<Figure, ChartError> {
             let top_y = ours
                 .iter()
                 .chain(&peers)
-                .map(|r| r.mrays[k])
+                .map(|r| r.mrays()[k])
                 .fold(0.0, f64::max)
                 * 1.15;
             let n = ours.len() as f64;
@@ -106,7 +106,7 @@ pub fn steps_chart() -> Result<Figure, ChartError> {
                 .draw()?;
             for peer in &peers {
                 let colour = peer_colour(&peer.method);
-                let y = peer.mrays[k];
+                let y = peer.mrays()[k];
                 c.draw_series(DashedLineSeries::new(
                     [(-0.5, y), (n - 0.5, y)],
                     8,
@@ -117,7 +117,7 @@ pub fn steps_chart() -> Result<Figure, ChartError> {
             let points: Vec<(f64, f64)> = ours
                 .iter()
                 .enumerate()
-                .map(|(i, r)| (i as f64, r.mrays[k]))
+                .map(|(i, r)| (i as f64, r.mrays()[k]))
                 .collect();
             c.draw_series(LineSeries::new(
                 points.iter().copied(),
@@ -148,7 +148,7 @@ fn caption(ours: &[&StepRow], peers: &[&StepRow]) -> String {
     let last = ours[ours.len() - 1];
     let best = ours
         .iter()
-        .max_by(|a, b| a.mrays[0].total_cmp(&b.mrays[0]))
+        .max_by(|a, b| a.mrays()[0].total_cmp(&b.mrays()[0]))
         .unwrap_or(&last);
     let ratios: Vec<String> = peers
         .iter()
@@ -156,9 +156,9 @@ fn caption(ours: &[&StepRow], peers: &[&StepRow]) -> String {
             format!(
                 "{} {:.2}× / {:.2}× / {:.2}×",
                 p.method,
-                best.mrays[0] / p.mrays[0],
-                best.mrays[1] / p.mrays[1],
-                best.mrays[2] / p.mrays[2]
+                best.mrays()[0] / p.mrays()[0],
+                best.mrays()[1] / p.mrays()[1],
+                best.mrays()[2] / p.mrays()[2]
             )
         })
         .collect();

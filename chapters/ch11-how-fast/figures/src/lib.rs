@@ -4,24 +4,15 @@ mod charts;
 pub mod measurements;
 pub mod rows;
 
-use raystep_figure::{Chapter, Measurement};
-use raystep_render::csv::to_csv;
+use raystep_figure::{Chapter, measurement};
 
 /// What the appendix hands `raystep figures`, `measure` and `check`.
-pub const CHAPTER: Chapter = Chapter {
-    id: "ch11",
-    title: "Appendix: how fast can it go",
-    package: "ch11-how-fast",
-    exercises: &[],
-    figures: Vec::new,
-    charts: &[charts::steps_chart],
-    measurements: &[Measurement {
-        what: "ch11 fast steps and peers",
-        file: "fast-steps.csv",
-        steps: measurements::steps,
-        run: |repeats, step| {
-            Ok(to_csv(&measurements::measure_steps(repeats, step)?))
-        },
-    }],
-    renderer: None,
-};
+pub const CHAPTER: Chapter =
+    Chapter::new("ch11-how-fast", "Appendix: how fast can it go", &[])
+        .charts(&[charts::steps_chart])
+        .measurements(&[measurement!(
+            "ch11 fast steps and peers",
+            "fast-steps.csv",
+            measurements::steps,
+            measurements::measure_steps
+        )]);

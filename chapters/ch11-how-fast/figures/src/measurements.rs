@@ -6,10 +6,10 @@
 use std::path::Path;
 
 use ch08::{Builder, MeshBvh, NodePrecision};
+use ch08_figures::bvh_measurements::compare_on;
 use ch11::{FastBvh, Step};
 use raystep_bench::{
-    Method, MethodReport, RaySet, compare, incoherent, on_threads_with_steps,
-    primary, shadow,
+    Method, MethodReport, RaySet, incoherent, primary, shadow,
 };
 use raystep_core::DVec3;
 
@@ -110,24 +110,10 @@ pub fn measure_steps(
                 .copied()
                 .collect()
         };
-        let (reports, _) = on_threads_with_steps(
-            threads,
-            |tick| {
-                compare(
-                    &triangles,
-                    &sets,
-                    &methods,
-                    repeats.max(1),
-                    &indicatif::ProgressBar::hidden(),
-                    tick,
-                )
-            },
-            step,
-        )
-        .map_err(|e| e.to_string())?;
-        for (method, mut report) in methods.iter().zip(reports) {
-            report.finish(&sets);
-            rows.push(row(&triangles, method, &report, &sets, threads)?);
+        let reports =
+            compare_on(threads, &triangles, &sets, &methods, repeats, step)?;
+        for (method, report) in methods.iter().zip(&reports) {
+            rows.push(row(&triangles, method, report, &sets, threads)?);
         }
     }
     Ok(rows)
@@ -155,6 +141,12 @@ fn row(
         _ => 0,
     };
     let set = |k: usize| &report.sets[k];
+    let nodes = |k: usize| set(k).nodes_per_ray.unwrap_or(0.0);
+    // the peers' counts are not known (NaN): 0
+    let tests = |k: usize| {
+        let t = set(k).triangles_per_ray;
+        if t.is_finite() { t } else { 0.0 }
+    };
     debug_assert_eq!(sets.len(), 3);
     Ok(StepRow {
         method: label(method),
@@ -163,13 +155,13 @@ fn row(
         build_ms: report.build_ms,
         mb: report.bytes.unwrap_or(0) as f64 / 1e6,
         node_bytes: node_bytes as u64,
-        mrays: [0, 1, 2].map(|k| set(k).mrays_per_s),
-        nodes: [0, 2].map(|k| set(k).nodes_per_ray.unwrap_or(0.0)),
-        // the peers' counts are not known (NaN): 0
-        tests: [0, 2].map(|k| {
-            let t = set(k).triangles_per_ray;
-            if t.is_finite() { t } else { 0.0 }
-        }),
+        primary_mrays: set(0).mrays_per_s,
+        shadow_mrays: set(1).mrays_per_s,
+        incoherent_mrays: set(2).mrays_per_s,
+        primary_nodes: nodes(0),
+        primary_tests: tests(0),
+        incoherent_nodes: nodes(2),
+        incoherent_tests: tests(2),
         wrong: wrong as u64,
     })
 }
