@@ -154,6 +154,29 @@ fn every_tracer(world: &World) -> Vec<(&'static str, Image, String)> {
     ]
 }
 
+/// Every tracer on `world` gives the same image bytes and the same counts
+/// as `expected` (every tracer on the plain list), asked `through` an
+/// accelerator named in the messages; how many tracers were compared.
+fn assert_same(
+    expected: &[(&'static str, Image, String)],
+    world: &World,
+    through: &str,
+    path: &Path,
+) -> usize {
+    let actual = every_tracer(world);
+    for ((name, a, a_counts), (_, b, b_counts)) in expected.iter().zip(&actual)
+    {
+        assert_eq!(
+            a.to_srgb8(),
+            b.to_srgb8(),
+            "{name} through {through} on {}: the images differ",
+            path.display()
+        );
+        assert_eq!(a_counts, b_counts, "{name} on {}", path.display());
+    }
+    actual.len()
+}
+
 #[test]
 fn every_tracer_gives_the_same_bytes_on_a_second_collection() {
     let scenes = chapter_scenes();
@@ -163,19 +186,7 @@ fn every_tracer_gives_the_same_bytes_on_a_second_collection() {
         let (list, boxed_world, boxed) = worlds(path);
         let expected = every_tracer(&list);
         let before = boxed.skipped.load(Ordering::Relaxed);
-        let actual = every_tracer(&boxed_world);
-        for ((name, a, a_counts), (_, b, b_counts)) in
-            expected.iter().zip(&actual)
-        {
-            assert_eq!(
-                a.to_srgb8(),
-                b.to_srgb8(),
-                "{name} on {}: the images differ",
-                path.display()
-            );
-            assert_eq!(a_counts, b_counts, "{name} on {}", path.display());
-            compared += 1;
-        }
+        compared += assert_same(&expected, &boxed_world, "a boxed list", path);
         // the tracers really asked the boxed list (it skipped objects)
         assert!(
             boxed.skipped.load(Ordering::Relaxed) > before,
@@ -205,20 +216,9 @@ fn every_tracer_gives_the_same_bytes_on_a_bvh() {
         let expected = every_tracer(&list);
         for builder in builders {
             let bvh = Arc::new(ch08::Bvh::for_objects(&list.objects, builder));
-            let actual = every_tracer(&list.clone().with_accelerator(bvh));
-            for ((name, a, a_counts), (_, b, b_counts)) in
-                expected.iter().zip(&actual)
-            {
-                assert_eq!(
-                    a.to_srgb8(),
-                    b.to_srgb8(),
-                    "{name} with a {} BVH on {}: the images differ",
-                    builder.name(),
-                    path.display()
-                );
-                assert_eq!(a_counts, b_counts, "{name} on {}", path.display());
-                compared += 1;
-            }
+            let world = list.clone().with_accelerator(bvh);
+            let through = format!("a {} BVH", builder.name());
+            compared += assert_same(&expected, &world, &through, path);
         }
     }
     assert!(compared >= 4 * 5 * 8);
@@ -243,21 +243,10 @@ fn every_tracer_gives_the_same_bytes_on_a_grid() {
         for (resolution, mailboxing) in resolutions {
             let mut grid = ch09::Grid::for_objects(&list.objects, resolution);
             grid.mailboxing = mailboxing;
-            let actual =
-                every_tracer(&list.clone().with_accelerator(Arc::new(grid)));
-            for ((name, a, a_counts), (_, b, b_counts)) in
-                expected.iter().zip(&actual)
-            {
-                assert_eq!(
-                    a.to_srgb8(),
-                    b.to_srgb8(),
-                    "{name} through a grid ({resolution:?}, mailbox \
-                     {mailboxing}) on {}: the images differ",
-                    path.display()
-                );
-                assert_eq!(a_counts, b_counts, "{name} on {}", path.display());
-                compared += 1;
-            }
+            let world = list.clone().with_accelerator(Arc::new(grid));
+            let through =
+                format!("a grid ({resolution:?}, mailbox {mailboxing})");
+            compared += assert_same(&expected, &world, &through, path);
         }
     }
     assert!(compared >= 4 * 4 * 10);
@@ -300,19 +289,8 @@ fn every_tracer_gives_the_same_bytes_on_a_kd_tree() {
         let rule = format!("the rule's {}", ch10::choose(&boxes).name());
         accelerators.push((rule, ch10::auto(&list.objects)));
         for (accelerator, built) in accelerators {
-            let actual = every_tracer(&list.clone().with_accelerator(built));
-            for ((name, a, a_counts), (_, b, b_counts)) in
-                expected.iter().zip(&actual)
-            {
-                assert_eq!(
-                    a.to_srgb8(),
-                    b.to_srgb8(),
-                    "{name} through {accelerator} on {}: the images differ",
-                    path.display()
-                );
-                assert_eq!(a_counts, b_counts, "{name} on {}", path.display());
-                compared += 1;
-            }
+            let world = list.clone().with_accelerator(built);
+            compared += assert_same(&expected, &world, &accelerator, path);
         }
     }
     assert!(compared >= 4 * 5 * 10);

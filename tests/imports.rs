@@ -171,7 +171,8 @@ impl Crate {
         }
         let mut at: ModPath = Vec::new();
         let mut i = 0;
-        while i < path.len() && self.modules.contains_key(&extend(&at, &path[i]))
+        while i < path.len()
+            && self.modules.contains_key(&extend(&at, &path[i]))
         {
             at.push(path[i].clone());
             i += 1;
@@ -247,7 +248,9 @@ fn flatten(
         path
     };
     match tree {
-        syn::UseTree::Path(p) => flatten(&p.tree, with(p.ident.to_string()), out),
+        syn::UseTree::Path(p) => {
+            flatten(&p.tree, with(p.ident.to_string()), out)
+        }
         syn::UseTree::Name(n) if n.ident == "self" => {
             let name = prefix.last().cloned();
             out.push((prefix.clone(), name));
@@ -415,7 +418,10 @@ fn no_file_uses_a_file_that_uses_it() {
             for ((from, to), path) in &edges {
                 if circle.contains(from) && circle.contains(to) {
                     let short = |p: &Path| {
-                        p.strip_prefix(&workspace).unwrap().display().to_string()
+                        p.strip_prefix(&workspace)
+                            .unwrap()
+                            .display()
+                            .to_string()
                     };
                     report.push_str(&format!(
                         "  {} -> {} ({path})\n",
@@ -434,10 +440,8 @@ fn no_file_uses_a_file_that_uses_it() {
 /// of the crate's root, and none where the uses run one way.
 #[test]
 fn a_circle_through_a_re_export_is_found() {
-    let dir = std::env::temp_dir().join(format!(
-        "raystep-imports-{}",
-        std::process::id()
-    ));
+    let dir = std::env::temp_dir()
+        .join(format!("raystep-imports-{}", std::process::id()));
     let src = dir.join("src");
     std::fs::create_dir_all(&src).unwrap();
     let write = |name: &str, text: &str| {

@@ -1,6 +1,6 @@
 //! A plane as a surface: the hit of a ray, and the plane as a scene's
 //! object.
-use crate::{RayPlane, ray_plane};
+use crate::ray_plane;
 use ch01::Plane;
 use raystep_core::{Aabb, Hit, Interval, Ray, Shape};
 

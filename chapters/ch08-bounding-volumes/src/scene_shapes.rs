@@ -3,8 +3,7 @@
 use std::path::Path;
 use std::sync::Arc;
 
-use ch02::{InfinitePlane, Plane, Polygon};
-use ch03::{BruteForce, Sphere};
+use ch03::BruteForce;
 use raystep_core::Shape;
 use raystep_scene::{Scene, Shape as ShapeSpec};
 use raystep_world::{World, WorldError};
@@ -19,16 +18,10 @@ use crate::{
 /// degenerate one (a polygon or triangle whose corners lie on a line).
 pub fn shape(spec: &ShapeSpec) -> Result<Arc<dyn Shape>, String> {
     Ok(match spec {
-        ShapeSpec::Sphere { center, radius } => {
-            Arc::new(Sphere::new(*center, *radius))
-        }
-        ShapeSpec::Plane { point, normal } => Arc::new(InfinitePlane(Plane {
-            normal: *normal,
-            d: -normal.dot(*point),
-        })),
-        ShapeSpec::Polygon { vertices } => {
-            Arc::new(Polygon::new(vertices.clone()).map_err(|e| e.to_string())?)
-        }
+        // Chapters 2 and 3's surfaces, as chapter 3 reads them.
+        ShapeSpec::Sphere { .. }
+        | ShapeSpec::Plane { .. }
+        | ShapeSpec::Polygon { .. } => ch03::shape(spec)?,
         ShapeSpec::Box { min, max } => Arc::new(AxisBox::new(*min, *max)?),
         ShapeSpec::Cylinder { base, top, radius } => {
             Arc::new(Cylinder::new(*base, *top, *radius)?)

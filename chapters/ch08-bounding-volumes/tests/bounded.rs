@@ -5,9 +5,10 @@ mod common;
 use ch03::Sphere;
 use ch08::{
     Aabb, Bound, BoundKind, Bounded, DVec3, Interval, Primitive, RandomLines,
-    Ray, Shape, TestCounts, sampling_sphere,
+    Ray, Shape, TestCounts,
 };
-use common::{TestPolygon, TestSphere, equilateral};
+use common::{TestPolygon, equilateral};
+use raystep_bench::sampling_sphere;
 
 /// Rays of every kind at `object`: random lines through the sphere around
 /// it, the same rays started from its centre (inside every bound), and
@@ -32,7 +33,7 @@ fn rays_at(object: &dyn Shape) -> Vec<(Ray, Interval)> {
 #[test]
 fn a_bounded_object_answers_what_the_object_answers() {
     let objects: [fn() -> Box<dyn Primitive>; 2] = [
-        || Box::new(TestSphere(Sphere::new(DVec3::new(1.0, 2.0, -3.0), 0.7))),
+        || Box::new(Sphere::new(DVec3::new(1.0, 2.0, -3.0), 0.7)),
         || Box::new(TestPolygon::new(&equilateral(1.5))),
     ];
     for make in objects {

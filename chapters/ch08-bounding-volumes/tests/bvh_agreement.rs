@@ -4,16 +4,15 @@
 //! on the bunny. Disagreements are counted and must be 0.
 mod common;
 
-use std::path::Path;
 use std::sync::Arc;
 
 use ch03::{BruteForce, Sphere};
 use ch08::{
     Aabb, Accelerator, AxisBox, BoundingSphere, Builder, Bvh, DVec3, Interval,
-    Object, RandomLines, Ray, Shape, Triangle, TriangleTest, camera_rays,
+    Object, RandomLines, Ray, Shape, Triangle, TriangleTest,
 };
-use common::Rng;
-use raystep_scene::Mesh;
+use common::{Rng, bunny, unit_vector};
+use raystep_bench::camera_rays;
 
 fn object(shape: impl Shape + 'static) -> Object {
     Object {
@@ -25,7 +24,7 @@ fn object(shape: impl Shape + 'static) -> Object {
 /// A seeded jumble around `offset`: spheres, boxes and triangles of many
 /// sizes, some overlapping, and one plane below them.
 fn jumble(count: usize, offset: DVec3, seed: u64) -> Vec<Object> {
-    let mut rng = Rng(seed);
+    let mut rng = Rng::new(seed);
     let mut objects = vec![object(ch02::InfinitePlane(ch02::Plane {
         normal: DVec3::Y,
         d: -(offset.y - 12.0) * -1.0,
@@ -33,11 +32,11 @@ fn jumble(count: usize, offset: DVec3, seed: u64) -> Vec<Object> {
     for k in 0..count {
         let c = offset
             + DVec3::new(
-                rng.range(-10.0, 10.0),
-                rng.range(-10.0, 10.0),
-                rng.range(-10.0, 10.0),
+                rng.uniform(-10.0, 10.0),
+                rng.uniform(-10.0, 10.0),
+                rng.uniform(-10.0, 10.0),
             );
-        let size = rng.range(0.05, 2.0);
+        let size = rng.uniform(0.05, 2.0);
         objects.push(match k % 3 {
             0 => object(Sphere::new(c, size)),
             1 => object(
@@ -51,8 +50,8 @@ fn jumble(count: usize, offset: DVec3, seed: u64) -> Vec<Object> {
                 Triangle::new(
                     [
                         c,
-                        c + size * rng.unit_vector(),
-                        c + size * rng.unit_vector(),
+                        c + size * unit_vector(&mut rng),
+                        c + size * unit_vector(&mut rng),
                     ],
                     TriangleTest::Watertight,
                 )
@@ -112,13 +111,16 @@ fn rays_through(objects: &[Object], count: usize, seed: u64) -> Vec<Ray> {
         .filter(|b| b.min.is_finite() && b.max.is_finite())
         .fold(Aabb::EMPTY, Aabb::union);
     let sphere = BoundingSphere::around_box(&bounds);
-    let mut rng = Rng(seed);
+    let mut rng = Rng::new(seed);
     let mut rays: Vec<Ray> =
         RandomLines::new(sphere, seed).take(count / 2).collect();
     for _ in 0..count / 2 {
         let from = sphere.center
-            + 0.8 * sphere.radius * rng.range(0.0, 1.0) * rng.unit_vector();
-        rays.push(Ray::new(from, rng.unit_vector()));
+            + 0.8
+                * sphere.radius
+                * rng.uniform(0.0, 1.0)
+                * unit_vector(&mut rng);
+        rays.push(Ray::new(from, unit_vector(&mut rng)));
     }
     rays
 }
@@ -238,11 +240,7 @@ fn degenerate_inputs_give_brute_forces_answers() {
 /// as the loop over all 3 674, and a table of each tree's shape.
 #[test]
 fn the_bunny_agrees_and_its_trees() {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/meshes/bunny.obj");
-    let mesh = Mesh::load_obj(&path).unwrap_or_else(|e| {
-        panic!("{e} (the bunny lives in ../shared/meshes beside the workspace)")
-    });
+    let mesh = bunny();
     let objects: Vec<Object> = (0..mesh.triangles.len())
         .map(|k| {
             object(

@@ -1,6 +1,8 @@
 //! The fast primitives — box, cylinder, ellipsoid, chapter 3's sphere,
 //! chapter 2's polygon and the three triangles — against analytic hits,
 //! from inside, inside their bounds, and refusing bad parameters.
+mod common;
+
 use std::f64::consts::TAU;
 
 use ch02::Polygon;
@@ -9,6 +11,7 @@ use ch08::{
     Aabb, AxisBox, BoundingSphere, Cylinder, DVec3, Ellipsoid, Hit, Interval,
     Primitive, Ray, Shape, Triangle, TriangleTest,
 };
+use common::Rng;
 use proptest::prelude::*;
 use raystep_check::{Table, num, seeded, vec3};
 
@@ -391,19 +394,6 @@ fn primitives() -> Vec<(Box<dyn Primitive>, Sampler)> {
     list
 }
 
-/// SplitMix64: numbers in [0, 1) from a fixed seed.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 /// Is `p` in `b`, allowing for the rounding of `p`?
 fn box_contains(b: &Aabb, p: DVec3) -> bool {
     let slack = DVec3::splat(1e-12) * (1.0 + p.abs());
@@ -419,7 +409,7 @@ fn sphere_contains(s: &BoundingSphere, p: DVec3) -> bool {
 /// of the box and of the sphere's radius.
 #[test]
 fn bounds_and_bounding_spheres_contain_the_surface_and_fit_it() {
-    let mut rng = Rng(0xB0_0D5);
+    let mut rng = Rng::new(0xB0_0D5);
     let mut table = Table::new(&[
         "primitive",
         "box min",
@@ -433,7 +423,7 @@ fn bounds_and_bounding_spheres_contain_the_surface_and_fit_it() {
         let mut reach = Aabb::EMPTY;
         let mut farthest: f64 = 0.0;
         for _ in 0..20_000 {
-            let p = sample(rng.next(), rng.next(), rng.next());
+            let p = sample(rng.unit(), rng.unit(), rng.unit());
             assert!(
                 box_contains(&b, p),
                 "{name}: {p} is outside its box {b:?}"
@@ -496,7 +486,7 @@ fn the_cylinder_box_is_the_box_of_its_caps() {
 /// pointing out (the way the ray goes).
 #[test]
 fn rays_from_inside_leave_with_the_outward_normal() {
-    let mut rng = Rng(0x1D5);
+    let mut rng = Rng::new(0x1D5);
     let insides = [
         (Box::new(the_box()) as Box<dyn Primitive>, v(0.25, 0.5, 2.0)),
         (Box::new(upright_cylinder()), v(0.1, -0.2, 1.5)),
@@ -515,7 +505,7 @@ fn rays_from_inside_leave_with_the_outward_normal() {
     ];
     for (shape, inside) in &insides {
         for _ in 0..2000 {
-            let d = v(rng.next(), rng.next(), rng.next()) * 2.0 - 1.0;
+            let d = v(rng.unit(), rng.unit(), rng.unit()) * 2.0 - 1.0;
             let ray = Ray::new(*inside, d);
             let hit = shape.intersect(&ray, Interval::FORWARD);
             let ok = hit.is_some_and(|h| {

@@ -1,30 +1,18 @@
 //! The fast walk (single-precision rays, nodes in f64, in f32 rounded
 //! outward, and in f32 rounded to nearest) against brute force with the
 //! chapter's own watertight test, on the bunny: camera rays, incoherent
-//! rays, rays aimed at every shared edge, and rays that are not rays.
-//! Disagreements and leaks are counted; for the two robust layouts they
-//! must be 0.
-use std::path::Path;
+//! rays, and rays that are not rays. Disagreements are counted; for the
+//! two robust layouts they must be 0. (Rays aimed at every shared edge,
+//! and the leaks, are `crates/stability`'s: `tests/mesh_bvh.rs` there.)
+mod common;
 
 use ch08::{
-    Aabb, Builder, Bvh, BvhNode, DVec3, EDGE_REACH, Interval, MeshAccelerator,
-    MeshBvh, MeshHit, NodePrecision, Ray32, TraceCounts, camera_rays,
-    incoherent_rays, leak_surfaces, shared_edge_rays, triangle_boxes,
-    watertight,
+    Aabb, Builder, Bvh, BvhNode, DVec3, Interval, MeshAccelerator, MeshBvh,
+    MeshHit, NodePrecision, Ray32, TraceCounts, triangle_boxes, watertight,
 };
+use common::bunny_triangles;
+use raystep_bench::{camera_rays, incoherent_rays};
 use raystep_core::glam::Vec3;
-use raystep_scene::Mesh;
-
-fn bunny() -> Vec<[DVec3; 3]> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/meshes/bunny.obj");
-    let mesh = Mesh::load_obj(&path).unwrap_or_else(|e| {
-        panic!("{e} (the bunny lives in ../shared/meshes beside the workspace)")
-    });
-    (0..mesh.triangles.len())
-        .map(|k| mesh.triangle(k))
-        .collect()
-}
 
 fn trees(triangles: &[[DVec3; 3]]) -> Vec<(NodePrecision, MeshBvh)> {
     let tree =
@@ -58,7 +46,7 @@ fn rays(triangles: &[[DVec3; 3]]) -> Vec<Ray32> {
 
 #[test]
 fn brute_force_is_the_chapters_watertight_test() {
-    let triangles = bunny();
+    let triangles = bunny_triangles();
     let (_, bvh) = &trees(&triangles)[0];
     let mut differences = 0;
     for ray in rays(&triangles).iter().step_by(7) {
@@ -83,7 +71,7 @@ fn brute_force_is_the_chapters_watertight_test() {
 
 #[test]
 fn every_layout_agrees_with_brute_force_on_the_bunny() {
-    let triangles = bunny();
+    let triangles = bunny_triangles();
     let rays = rays(&triangles);
     let trees = trees(&triangles);
     let truths: Vec<_> = rays
@@ -117,53 +105,9 @@ fn every_layout_agrees_with_brute_force_on_the_bunny() {
     insta::assert_snapshot!(table);
 }
 
-/// Rays aimed at the points along every shared edge
-/// ([`shared_edge_rays`]): how many, and how many leak through each layout
-/// (f64, f32, f32 to nearest) and through brute force. A *leak* is a ray
-/// aimed at a point on the surface that hits nothing at or before it.
-fn leaks(triangles: &[[DVec3; 3]], points: &[f64]) -> (usize, [usize; 4]) {
-    let rays = shared_edge_rays(triangles, points);
-    let trees = trees(triangles);
-    let through = |k: usize| ch08::leaks(&trees[k].1, &rays);
-    let brute = rays
-        .iter()
-        .filter(|ray| trees[0].1.brute_force(ray, EDGE_REACH).is_none())
-        .count();
-    (rays.len(), [through(0), through(1), through(2), brute])
-}
-
-#[test]
-fn no_ray_leaks_through_a_shared_edge() {
-    let bunny = bunny();
-    // The bunny as read (its corners are f32 numbers), moved 1000 away
-    // and shrunk by 3 (corners no f32 can hold: nodes rounded), and a
-    // floor of tiles 0.1 wide (no f32 holds 0.1): its edges lie on the
-    // faces of the leaves' boxes.
-    let mut table = String::new();
-    for surface in leak_surfaces(&bunny) {
-        let name = surface.name.replace("mesh", "bunny");
-        let (aimed, leaks) = leaks(&surface.triangles, surface.points);
-        assert!(aimed > 4_000, "{name}: {aimed}");
-        assert_eq!(
-            leaks[..2],
-            [0, 0],
-            "{name}: leaks through f64 and f32 nodes (brute force: {})",
-            leaks[3]
-        );
-        assert_eq!(leaks[3], 0, "{name}: leaks by brute force");
-        table += &format!(
-            "{name}: {aimed} rays aimed at shared edges (no silhouettes)\n\
-             leaks: f64 nodes {}, f32 nodes {}, f32 rounded to nearest {}, \
-             brute force {}\n",
-            leaks[0], leaks[1], leaks[2], leaks[3]
-        );
-    }
-    insta::assert_snapshot!(table);
-}
-
 #[test]
 fn rays_that_are_not_rays_are_answered_without_a_panic() {
-    let triangles = bunny();
+    let triangles = bunny_triangles();
     let bad = [
         Ray32 {
             origin: Vec3::new(f32::NAN, 0.0, 0.0),

@@ -12,7 +12,7 @@ use ch08::{
     Aabb, Accelerator, Bvh, BvhNode, DVec3, Hit, Interval, Object, Ray,
     SahCosts, Shape, near_first_closest_hit, slab_test, split_cost,
 };
-use common::Rng;
+use common::{Rng, unit_vector};
 
 /// The walk tests its boxes with exercise 1 (`slab_test`), and the trees
 /// built here choose their leaves with exercise 5 (`split_cost`): each is
@@ -121,6 +121,20 @@ fn sphere(center: DVec3, radius: f64) -> Object {
     }
 }
 
+/// The closest hit along `origin` + t·`direction`, walked near first with
+/// the log emptied before (so that it then holds this walk's tests).
+fn walk(
+    bvh: &Bvh,
+    objects: &[Object],
+    log: &Mutex<Vec<usize>>,
+    origin: DVec3,
+    direction: DVec3,
+) -> Option<(usize, Hit)> {
+    tested(log); // start from an empty log
+    let ray = Ray::new(origin, direction);
+    near_first_closest_hit(bvh, objects, &ray, Interval::FORWARD)
+}
+
 /// The object and t of a closest hit, for comparing.
 fn answer(hit: Option<(usize, Hit)>) -> Option<(usize, f64)> {
     hit.map(|(i, hit)| (i, hit.t))
@@ -154,10 +168,7 @@ fn along_a_row_only_the_boxes_before_the_first_hit_are_opened() {
         (DVec3::new(200.0, 0.0, 0.0), -DVec3::X, 63, 10.0),
     ];
     for (origin, direction, first, t) in cases {
-        tested(&log); // start from an empty log
-        let ray = Ray::new(origin, direction);
-        let hit =
-            near_first_closest_hit(&bvh, &objects, &ray, Interval::FORWARD);
+        let hit = walk(&bvh, &objects, &log, origin, direction);
         assert_eq!(
             answer(hit),
             Some((first, t)),
@@ -262,10 +273,7 @@ fn a_hand_built_tree_opens_exactly_the_first_leaf() {
         ),
     ];
     for (origin, direction, expected, leaves) in cases {
-        tested(&log); // start from an empty log
-        let ray = Ray::new(origin, direction);
-        let hit =
-            near_first_closest_hit(&bvh, &objects, &ray, Interval::FORWARD);
+        let hit = walk(&bvh, &objects, &log, origin, direction);
         assert_eq!(
             answer(hit),
             expected,
@@ -369,15 +377,15 @@ fn no_tree_and_objects_outside_it() {
 #[test]
 fn seeded_rays_find_what_brute_force_finds() {
     exercises_it_stands_on();
-    let mut rng = Rng(8);
+    let mut rng = Rng::new(8);
     let objects: Vec<Object> = (0..300)
         .map(|_| {
             let c = DVec3::new(
-                rng.range(-20.0, 20.0),
-                rng.range(-20.0, 20.0),
-                rng.range(-20.0, 20.0),
+                rng.uniform(-20.0, 20.0),
+                rng.uniform(-20.0, 20.0),
+                rng.uniform(-20.0, 20.0),
             );
-            sphere(c, rng.range(0.1, 3.0))
+            sphere(c, rng.uniform(0.1, 3.0))
         })
         .collect();
     let (mut disagreements, mut first) = (0, None);
@@ -385,11 +393,11 @@ fn seeded_rays_find_what_brute_force_finds() {
     {
         let bvh = Bvh::for_objects(&objects, split);
         for _ in 0..2000 {
-            let origin = 40.0 * rng.unit_vector();
+            let origin = 40.0 * unit_vector(&mut rng);
             let target = DVec3::new(
-                rng.range(-20.0, 20.0),
-                rng.range(-20.0, 20.0),
-                rng.range(-20.0, 20.0),
+                rng.uniform(-20.0, 20.0),
+                rng.uniform(-20.0, 20.0),
+                rng.uniform(-20.0, 20.0),
             );
             let ray = Ray::new(origin, target - origin);
             let expected =

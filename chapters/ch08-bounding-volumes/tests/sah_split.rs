@@ -92,20 +92,23 @@ fn children_of_different_sizes() {
     let parent = Aabb::new(DVec3::ZERO, DVec3::new(4.0, 1.0, 1.0));
     let l = cube(DVec3::ZERO, 1.0);
     let r = Aabb::new(DVec3::X, DVec3::new(4.0, 1.0, 1.0));
-    assert_cost(
-        (&parent, &l, 1, &r, 7),
-        (6.0 * 1.0 + 14.0 * 7.0) / 18.0,
-        1e-12,
-        "(6·1 + 14·7)/18 = 5.777… tests: the small child's 1 object, the \
-         large child's 7",
-    );
-    assert_cost(
-        (&parent, &l, 7, &r, 1),
-        (6.0 * 7.0 + 14.0 * 1.0) / 18.0,
-        1e-12,
-        "(6·7 + 14·1)/18 = 3.111… tests: the small child's 7 objects, the \
-         large child's 1",
-    );
+    for (n_left, n_right, why) in [
+        (
+            1,
+            7,
+            "(6·1 + 14·7)/18 = 5.777… tests: the small child's 1 object, \
+             the large child's 7",
+        ),
+        (
+            7,
+            1,
+            "(6·7 + 14·1)/18 = 3.111… tests: the small child's 7 objects, \
+             the large child's 1",
+        ),
+    ] {
+        let tests = (6.0 * n_left as f64 + 14.0 * n_right as f64) / 18.0;
+        assert_cost((&parent, &l, n_left, &r, n_right), tests, 1e-12, why);
+    }
 }
 
 /// Children as large as the parent: every object is tested, plus the

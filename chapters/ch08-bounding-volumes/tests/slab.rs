@@ -1,6 +1,9 @@
 //! Exercise 1: the robust slab test, against a catalogue of the rays that
 //! break naive ones.
+mod common;
+
 use ch08::{Aabb, DVec3, Interval, Ray, slab_test};
+use common::{Rng, plain_slab};
 use proptest::prelude::*;
 use raystep_check::{Table, seeded};
 
@@ -89,20 +92,6 @@ fn right(got: Option<Interval>, expected: Expected, query: Interval) -> bool {
         }
         (_, None) => false,
     }
-}
-
-/// The slab test as it is often written: each slab's two crossings ordered
-/// by min/max, no widened exit.
-fn naive(b: &Aabb, ray: &Ray, interval: Interval) -> Option<Interval> {
-    let (mut t0, mut t1) = (interval.min, interval.max);
-    for axis in 0..3 {
-        let inverse = 1.0 / ray.direction[axis];
-        let a = (b.min[axis] - ray.origin[axis]) * inverse;
-        let c = (b.max[axis] - ray.origin[axis]) * inverse;
-        t0 = t0.max(a.min(c));
-        t1 = t1.min(a.max(c));
-    }
-    (t0 <= t1).then_some(Interval::new(t0, t1))
 }
 
 /// A point of `b`: at fraction `f[i]` of its extent along axis i.
@@ -290,25 +279,12 @@ fn origins_on_a_slab_plane(zero: f64) -> Vec<(Aabb, Ray, Expected)> {
     rays
 }
 
-/// SplitMix64: numbers in [0, 1) from a fixed seed.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    /// An integer in [−n, n] other than 0, as a float.
-    fn offset(&mut self, n: f64) -> f64 {
-        loop {
-            let k = (self.next() * (2.0 * n + 1.0)).floor() - n;
-            if k != 0.0 {
-                return k;
-            }
+/// An integer in [−n, n] other than 0, as a float.
+fn offset(rng: &mut Rng, n: f64) -> f64 {
+    loop {
+        let k = (rng.unit() * (2.0 * n + 1.0)).floor() - n;
+        if k != 0.0 {
+            return k;
         }
     }
 }
@@ -317,27 +293,27 @@ impl Rng {
 /// away (up to 1000 units, integer offsets, so the ray passes exactly
 /// through its target at t = 1): half of them only touch the box there.
 fn edges_and_corners() -> Case {
-    let mut rng = Rng(0x51AB);
+    let mut rng = Rng::new(0x51AB);
     let mut rays = Vec::new();
     for b in boxes() {
         for k in 0..6000 {
             // a point on an edge (two coordinates pinned to faces) or a
             // corner (three), the others at a fraction n/1024 of the box
             let mut f = DVec3::new(
-                (rng.next() * 1024.0).floor() / 1024.0,
-                (rng.next() * 1024.0).floor() / 1024.0,
-                (rng.next() * 1024.0).floor() / 1024.0,
+                (rng.unit() * 1024.0).floor() / 1024.0,
+                (rng.unit() * 1024.0).floor() / 1024.0,
+                (rng.unit() * 1024.0).floor() / 1024.0,
             );
             let pinned = if k % 4 == 0 { 3 } else { 2 };
             for n in 0..pinned {
-                f[(k + n) % 3] = if rng.next() < 0.5 { 0.0 } else { 1.0 };
+                f[(k + n) % 3] = if rng.unit() < 0.5 { 0.0 } else { 1.0 };
             }
             let target = point_in(&b, f);
             let scale = [1.0, 30.0, 1000.0][k % 3];
             let offset = DVec3::new(
-                rng.offset(scale),
-                rng.offset(scale),
-                rng.offset(scale),
+                offset(&mut rng, scale),
+                offset(&mut rng, scale),
+                offset(&mut rng, scale),
             );
             let from = target + offset;
             assert_eq!(target - from, -offset, "an inexact direction");
@@ -425,8 +401,11 @@ fn stability_catalogue() {
                 wrong += 1;
                 first_wrong.get_or_insert((b, ray, expected, got));
             }
-            naive_wrong +=
-                usize::from(!right(naive(&b, &ray, query), expected, query));
+            naive_wrong += usize::from(!right(
+                plain_slab(&b, &ray, query),
+                expected,
+                query,
+            ));
         }
         table.row(&[
             name.to_string(),

@@ -7,7 +7,7 @@ use ch08::{
     Aabb, Ball, Blobby, BoundingSphere, DVec3, Interval, Primitive, Ray,
     Saddle, Shape, Torus, TorusSolver,
 };
-use common::Rng;
+use common::{Rng, unit_vector};
 use std::f64::consts::PI;
 
 const SOLVERS: [TorusSolver; 2] =
@@ -95,7 +95,7 @@ fn torus_hits_where_it_touches_its_box() {
         (DVec3::ZERO, DVec3::Y),
         (DVec3::new(3.0, -1.0, 0.5), DVec3::new(1.0, 1.0, -2.0)),
     ];
-    let mut rng = Rng(9);
+    let mut rng = Rng::new(9);
     let mut misses = Vec::new();
     for (center, axis) in placements {
         for solver in SOLVERS {
@@ -104,7 +104,7 @@ fn torus_hits_where_it_touches_its_box() {
             let (u, w) = n.any_orthonormal_pair();
             for k in 1..=15 {
                 let delta = 10f64.powi(-k);
-                let phi = rng.range(0.0, 2.0 * PI);
+                let phi = rng.uniform(0.0, 2.0 * PI);
                 let out = phi.cos() * u + phi.sin() * w;
                 let want = 4.25 - (0.0625 - delta * delta).sqrt();
                 let rays = [
@@ -144,15 +144,15 @@ fn torus_point(torus: &Torus, theta: f64, phi: f64) -> DVec3 {
 /// some point comes within 1e-3·(R + r) of it.
 #[test]
 fn torus_bounds_hold_the_surface_tightly() {
-    let mut rng = Rng(3);
+    let mut rng = Rng::new(3);
     for case in 0..6 {
         let axis = if case == 0 {
             DVec3::Y
         } else {
-            rng.unit_vector()
+            unit_vector(&mut rng)
         };
         let center =
-            DVec3::new(rng.range(-5.0, 5.0), 1.0, rng.range(-5.0, 5.0));
+            DVec3::new(rng.uniform(-5.0, 5.0), 1.0, rng.uniform(-5.0, 5.0));
         let torus =
             Torus::new(center, axis, 2.0, 0.7, TorusSolver::Bracketed).unwrap();
         let (bounds, sphere) = (torus.bounds(), torus.bounding_sphere());
@@ -187,15 +187,15 @@ fn torus_bounds_hold_the_surface_tightly() {
 /// reported one (both solvers agree on these near rays).
 #[test]
 fn torus_hits_lie_on_the_surface_with_outward_normals() {
-    let mut rng = Rng(4);
+    let mut rng = Rng::new(4);
     let (center, axis) = (DVec3::new(1.0, 2.0, 3.0), DVec3::new(0.3, 1.0, 0.2));
     let mut hits = 0;
     for solver in SOLVERS {
         let torus = Torus::new(center, axis, 1.5, 0.5, solver).unwrap();
         let n = torus.axis();
         for _ in 0..2000 {
-            let from = center + 6.0 * rng.unit_vector();
-            let aim = center + 2.0 * rng.unit_vector();
+            let from = center + 6.0 * unit_vector(&mut rng);
+            let aim = center + 2.0 * unit_vector(&mut rng);
             let ray = Ray::new(from, aim - from);
             let Some(hit) = torus.intersect(&ray, Interval::FORWARD) else {
                 continue;
@@ -340,13 +340,14 @@ fn saddle_near_tangent_rays() {
         let v = p - center;
         v.y - saddle_height(s, v.x, v.z).0
     };
-    let mut rng = Rng(5);
+    let mut rng = Rng::new(5);
     let mut rays = Vec::new();
     for _ in 0..4000 {
-        let (x, z) = (rng.range(-0.99, 0.99) * s, rng.range(-0.99, 0.99) * s);
+        let (x, z) =
+            (rng.uniform(-0.99, 0.99) * s, rng.uniform(-0.99, 0.99) * s);
         let (y, normal) = saddle_height(s, x, z);
         let point = center + DVec3::new(x, y, z);
-        let tangent = normal.cross(rng.unit_vector()).normalize();
+        let tangent = normal.cross(unit_vector(&mut rng)).normalize();
         for k in [3, 6, 9, 12] {
             for sign in [-1.0, 1.0] {
                 for lead in [1.0, 100.0] {
@@ -358,8 +359,8 @@ fn saddle_near_tangent_rays() {
         }
     }
     for _ in 0..20_000 {
-        let from = center + 4.0 * s * rng.unit_vector();
-        let aim = center + s * DVec3::new(rng.range(-1.0, 1.0), 0.0, 0.0);
+        let from = center + 4.0 * s * unit_vector(&mut rng);
+        let aim = center + s * DVec3::new(rng.uniform(-1.0, 1.0), 0.0, 0.0);
         rays.push((Ray::new(from, aim - from), None));
     }
     let (mut nan_normals, mut off_surface, mut missed, mut hits) = (0, 0, 0, 0);
@@ -442,9 +443,9 @@ fn ball(center: DVec3, radius: f64, strength: f64) -> Ball {
 fn one_ball_is_a_sphere() {
     let center = DVec3::new(0.5, -1.0, 2.0);
     let blob = Blobby::new(vec![ball(center, 2.0, 3.0)], 1.5).unwrap();
-    let mut rng = Rng(6);
+    let mut rng = Rng::new(6);
     for _ in 0..200 {
-        let d = rng.unit_vector();
+        let d = unit_vector(&mut rng);
         let ray = Ray::new(center - 5.0 * d, d);
         let hit = blob.intersect(&ray, Interval::FORWARD).unwrap();
         assert!(near(hit.t, 4.0, 1e-9), "{hit:?}");
@@ -502,7 +503,7 @@ fn two_balls_merge() {
 /// the tangent rays moved inward by 1e-9 or more all hit.
 #[test]
 fn blobby_near_tangent_rays() {
-    let mut rng = Rng(7);
+    let mut rng = Rng::new(7);
     let center = DVec3::new(0.5, -1.0, 2.0);
     let sphere_blob = Blobby::new(vec![ball(center, 2.0, 3.0)], 1.5).unwrap();
     let blob = Blobby::new(
@@ -518,8 +519,8 @@ fn blobby_near_tangent_rays() {
     let mut cases = Vec::new();
     for _ in 0..2500 {
         // a point of the unit sphere around `center`, a tangent there
-        let normal = rng.unit_vector();
-        let tangent = normal.cross(rng.unit_vector()).normalize();
+        let normal = unit_vector(&mut rng);
+        let tangent = normal.cross(unit_vector(&mut rng)).normalize();
         for k in 3..=12 {
             for sign in [-1.0, 1.0] {
                 let start = center + (1.0 + sign * 10f64.powi(-k)) * normal
@@ -530,8 +531,8 @@ fn blobby_near_tangent_rays() {
         }
     }
     for _ in 0..20_000 {
-        let from = 5.0 * rng.unit_vector();
-        let aim = 1.5 * rng.unit_vector();
+        let from = 5.0 * unit_vector(&mut rng);
+        let aim = 1.5 * unit_vector(&mut rng);
         cases.push((&blob, Ray::new(from, aim - from), false));
     }
     let (mut nan_normals, mut off_surface, mut not_first, mut missed) =
@@ -655,7 +656,7 @@ fn asked_again_past_a_hit_the_roots_move_on() {
             .unwrap(),
         ),
     ];
-    let mut rng = Rng(11);
+    let mut rng = Rng::new(11);
     let mut worst = [0usize; 3];
     for (k, object) in objects.iter().enumerate() {
         let sphere = object.bounding_sphere();
@@ -663,15 +664,18 @@ fn asked_again_past_a_hit_the_roots_move_on() {
         while surface_points < 300 {
             // a ray from outside onto the surface, then one leaving the
             // hit point toward a random "light"
-            let from = sphere.center + 3.0 * sphere.radius * rng.unit_vector();
-            let at = sphere.center + 0.5 * sphere.radius * rng.unit_vector();
+            let from =
+                sphere.center + 3.0 * sphere.radius * unit_vector(&mut rng);
+            let at =
+                sphere.center + 0.5 * sphere.radius * unit_vector(&mut rng);
             let Some(hit) =
                 object.intersect(&Ray::new(from, at - from), Interval::FORWARD)
             else {
                 continue;
             };
             surface_points += 1;
-            let light = sphere.center + 4.0 * sphere.radius * rng.unit_vector();
+            let light =
+                sphere.center + 4.0 * sphere.radius * unit_vector(&mut rng);
             let leaving = Ray::new(hit.point, light - hit.point);
             let mut interval = Interval::new(0.0, 1.0);
             let mut steps = 0;

@@ -1,44 +1,17 @@
 //! Exercise 4: a tight bounding sphere of a point set, against the box's
 //! circumsphere and against the smallest sphere where it is known.
-use std::path::PathBuf;
+mod common;
 
-use ch08::{
-    BoundingSphere, DVec3, sketch_bounds, sketch_shapes, sphere_of_points,
-};
+use ch08::{BoundingSphere, DVec3, sphere_of_points};
+use common::{Rng, bunny, half_diameter};
 use proptest::prelude::*;
 use raystep_check::{Table, num_places, seeded};
 use raystep_core::glam::DQuat;
-use raystep_scene::Mesh;
 
 /// How much larger than the smallest sphere a tight sphere may be.
 /// Ritter's algorithm stays within 5 to 20 % in general; on the sets below
 /// it is within 12 %, and an exact algorithm (Welzl's) is at 1.
 const FACTOR: f64 = 1.15;
-
-/// SplitMix64: deterministic random numbers, the same on every machine.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn unit(&mut self) -> DVec3 {
-        loop {
-            let p = DVec3::new(self.next(), self.next(), self.next()) * 2.0
-                - DVec3::ONE;
-            let l2 = p.length_squared();
-            if l2 > 1e-4 && l2 <= 1.0 {
-                return p / l2.sqrt();
-            }
-        }
-    }
-}
 
 /// How far outside the sphere a point may be: rounding, relative to the
 /// sizes involved (the radius and the coordinates of the centre).
@@ -100,10 +73,10 @@ fn check_within(
 /// Points on a sphere, each with its opposite point: the smallest sphere
 /// around them is that sphere (two opposite points need its diameter).
 fn on_a_sphere(center: DVec3, radius: f64, pairs: usize) -> Vec<DVec3> {
-    let mut rng = Rng(11);
+    let mut rng = Rng::new(11);
     (0..pairs)
         .flat_map(|_| {
-            let u = rng.unit();
+            let u = rng.unit_vec3();
             [center + radius * u, center - radius * u]
         })
         .collect()
@@ -137,19 +110,6 @@ fn tetrahedron(center: DVec3, angle: f64) -> Vec<DVec3> {
     .iter()
     .map(|&v| center + turn * v)
     .collect()
-}
-
-/// Half the largest distance between two points: no sphere around them is
-/// smaller (it must hold the two farthest apart), and the smallest is at
-/// most √(3/2) times larger (Jung's theorem).
-fn half_diameter(points: &[DVec3]) -> f64 {
-    let mut largest: f64 = 0.0;
-    for (i, &a) in points.iter().enumerate() {
-        for &b in &points[i + 1..] {
-            largest = largest.max(a.distance_squared(b));
-        }
-    }
-    0.5 * largest.sqrt()
 }
 
 #[test]
@@ -211,9 +171,9 @@ fn corners_of_a_box_and_collinear_points() {
     // points on a segment, in a shuffled order: the smallest sphere has
     // the segment as its diameter
     let (a, b) = (DVec3::new(-1.0, 2.0, 0.5), DVec3::new(3.0, -2.0, 4.5));
-    let mut rng = Rng(5);
+    let mut rng = Rng::new(5);
     let mut points: Vec<DVec3> =
-        (0..200).map(|_| a.lerp(b, rng.next())).collect();
+        (0..200).map(|_| a.lerp(b, rng.unit())).collect();
     points.extend([b, a]);
     points.rotate_left(77);
     let s = check("points on a segment", &points, 0.5 * a.distance(b));
@@ -272,20 +232,6 @@ fn one_point_duplicates_and_none() {
     assert_eq!(BoundingSphere::around_points_by_box(&[]), none);
 }
 
-/// The Stanford bunny beside the workspace: `../shared/meshes/bunny.obj`
-/// from the workspace root (this crate is two folders below it).
-fn bunny() -> Mesh {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/meshes/bunny.obj");
-    assert!(
-        path.exists(),
-        "the Stanford bunny is missing: expected {} (the folder shared/ \
-         beside the workspace, see shared/meshes/README.md)",
-        path.display()
-    );
-    Mesh::load_obj(&path).expect("bunny.obj should be a valid OBJ file")
-}
-
 /// The bunny's 1,839 vertices: the box's circumsphere, and the tight
 /// sphere between half the diameter (nothing smaller holds the two
 /// farthest vertices) and the box's circumsphere. The table holds what any
@@ -327,43 +273,6 @@ fn the_bunny() {
     insta::assert_snapshot!(table.to_string());
 }
 
-/// The lecture's sketch, in the plane z = 0: each shape inside its box
-/// (flat: z from 0 to 0) and its two circles, the tight one within the
-/// factor of the smallest (known for these shapes), the box's circle
-/// through the box's corners.
-#[test]
-fn the_lecture_sketch() {
-    let smallest = [
-        ("circle", 1.0),
-        ("square", 0.8 * 2f64.sqrt()),
-        (
-            "thin rectangle",
-            0.5 * (2.4f64.powi(2) + 0.3f64.powi(2)).sqrt(),
-        ),
-        ("capsule", 1.5 + 0.35),
-    ];
-    let shapes = sketch_shapes();
-    assert_eq!(shapes.len(), smallest.len());
-    for ((name, points), (expected_name, r_min)) in shapes.iter().zip(smallest)
-    {
-        assert_eq!(*name, expected_name);
-        let (b, tight, by_box) = sketch_bounds(points);
-        assert!(
-            points.iter().all(|&p| p.z == 0.0 && b.contains(p)),
-            "{name}"
-        );
-        assert_eq!((b.min.z, b.max.z), (0.0, 0.0), "{name}");
-        assert_eq!(by_box, BoundingSphere::around_box(&b), "{name}");
-        assert_holds_all(name, points, &by_box);
-        assert!(
-            tight.center.z.abs() < 1e-12,
-            "{name}, points in the plane z = 0: expected the tight sphere's \
-             centre in that plane too, got {tight:?}"
-        );
-        check(name, points, r_min);
-    }
-}
-
 proptest! {
     #![proptest_config(seeded(256))]
 
@@ -378,11 +287,11 @@ proptest! {
         scale in -6.0..3.0f64,
         offset in -6.0..6.0f64,
     ) {
-        let mut rng = Rng(seed);
+        let mut rng = Rng::new(seed);
         let (size, shift) = (10f64.powf(scale), 10f64.powf(offset));
-        let at = shift * rng.unit();
+        let at = shift * rng.unit_vec3();
         let points: Vec<DVec3> = (0..count)
-            .map(|_| at + size * (rng.unit() * rng.next()))
+            .map(|_| at + size * (rng.unit_vec3() * rng.unit()))
             .collect();
         let s = sphere_of_points(&points);
         assert_holds_all("a random cloud", &points, &s);

@@ -20,18 +20,20 @@ fn implicit(major: f64, minor: f64, p: DVec3) -> (f64, f64) {
 /// within 1e-12 of the size of f's terms.
 #[test]
 fn the_quartic_is_f_along_the_ray() {
-    let mut rng = Rng(8);
+    let mut rng = Rng::new(8);
     for case in 0..500 {
-        let major = rng.range(0.5, 3.0);
-        let minor = major * rng.range(0.05, 0.95);
+        let major = rng.uniform(0.5, 3.0);
+        let minor = major * rng.uniform(0.05, 0.95);
         let origin = DVec3::new(
-            rng.range(-5.0, 5.0),
-            rng.range(-5.0, 5.0),
-            rng.range(-5.0, 5.0),
+            rng.uniform(-5.0, 5.0),
+            rng.uniform(-5.0, 5.0),
+            rng.uniform(-5.0, 5.0),
         );
-        let direction =
-            DVec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.next())
-                * rng.range(0.2, 3.0);
+        let direction = DVec3::new(
+            rng.uniform(-1.0, 1.0),
+            rng.uniform(-1.0, 1.0),
+            rng.unit(),
+        ) * rng.uniform(0.2, 3.0);
         let ray = Ray::new(origin, direction);
         let c = torus_quartic(major, minor, &ray);
         for t in [-2.0, 0.0, 0.37, 1.0, 2.5, 10.0] {

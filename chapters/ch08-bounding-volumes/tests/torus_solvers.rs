@@ -9,7 +9,7 @@
 //! the two close roots.
 mod common;
 use ch08::{DVec3, Ray, Torus, TorusSolver};
-use common::Rng;
+use common::{Rng, unit_vector};
 use raystep_check::{Table, num_places};
 use std::f64::consts::PI;
 
@@ -270,8 +270,9 @@ fn outer_grazing(offset: f64, lead: f64, rng: &mut Rng) -> Vec<Case> {
     (0..40)
         .map(|i| {
             let spec = tori()[i % 2];
-            let theta = rng.range(-1.2, 1.2);
-            let (phi, alpha) = (rng.range(0.0, 2.0 * PI), rng.range(0.0, PI));
+            let theta = rng.uniform(-1.2, 1.2);
+            let (phi, alpha) =
+                (rng.uniform(0.0, 2.0 * PI), rng.uniform(0.0, PI));
             tangent_ray(&spec, (theta, phi, alpha), -offset, lead)
         })
         .collect()
@@ -285,9 +286,9 @@ fn inner_grazing(offset: f64, lead: f64, rng: &mut Rng) -> Vec<Case> {
     (0..40)
         .map(|i| {
             let spec = tori()[i % 2];
-            let theta = PI + rng.range(-0.5, 0.5);
-            let phi = rng.range(0.0, 2.0 * PI);
-            let alpha = rng.range(80.0, 100.0).to_radians();
+            let theta = PI + rng.uniform(-0.5, 0.5);
+            let phi = rng.uniform(0.0, 2.0 * PI);
+            let alpha = rng.uniform(80.0, 100.0).to_radians();
             tangent_ray(&spec, (theta, phi, alpha), offset, lead)
         })
         .collect()
@@ -303,10 +304,10 @@ fn along_the_axis(rng: &mut Rng) -> Vec<Case> {
             let off = if i < 10 {
                 0.0
             } else {
-                rng.range(0.0, 0.9) * (spec.major - spec.minor)
+                rng.uniform(0.0, 0.9) * (spec.major - spec.minor)
             };
-            let beta = rng.range(0.0, 2.0 * PI);
-            let height = side * rng.range(2.0, 1e3);
+            let beta = rng.uniform(0.0, 2.0 * PI);
+            let height = side * rng.uniform(2.0, 1e3);
             let start = DVec3::new(off * beta.cos(), height, off * beta.sin());
             Case {
                 spec,
@@ -326,10 +327,10 @@ fn from_afar(distance: f64, rng: &mut Rng) -> Vec<Case> {
     (0..40)
         .map(|i| {
             let spec = tori()[i % 2];
-            let origin = spec.center + distance * rng.unit_vector();
-            let phi = rng.range(0.0, 2.0 * PI);
-            let inside = 0.5 * spec.minor * rng.range(0.0, 1.0);
-            let beta = rng.range(0.0, 2.0 * PI);
+            let origin = spec.center + distance * unit_vector(rng);
+            let phi = rng.uniform(0.0, 2.0 * PI);
+            let inside = 0.5 * spec.minor * rng.uniform(0.0, 1.0);
+            let beta = rng.uniform(0.0, 2.0 * PI);
             let ring = spec.major + inside * beta.cos();
             let aim = spec.world(DVec3::new(
                 ring * phi.cos(),
@@ -417,7 +418,7 @@ const BRACKETED_RELATIVE_ERROR: f64 = 2e-10;
 /// (all of them from 1e3 on: the coefficients grow like |O|⁴ and cancel).
 #[test]
 fn stability_table() {
-    let mut rng = Rng(2026);
+    let mut rng = Rng::new(2026);
     let mut families: Vec<(String, String, Vec<Case>)> = Vec::new();
     for lead in [4.0, 100.0] {
         for (kind, rays) in [

@@ -1,8 +1,11 @@
 //! Exercise 2: the watertight ray–triangle test — its hits, and a closed
 //! mesh that no ray leaks through and no ray hits twice.
+mod common;
+
 use std::collections::HashMap;
 
 use ch08::{DVec3, Interval, Ray, Triangle, TriangleTest, watertight};
+use common::{Rng, unit_vector};
 use proptest::prelude::*;
 use raystep_check::{Table, seeded};
 use raystep_core::glam::DQuat;
@@ -263,6 +266,20 @@ fn hit_by(triangles: &[[DVec3; 3]], ray: &Ray) -> Vec<usize> {
         .collect()
 }
 
+/// Every ray at a tie point of `mesh` (along the directions of
+/// [`tie_directions`]): its target, its direction and the triangles it
+/// hits.
+fn tie_hits(mesh: &FlatMesh, axis: usize) -> Vec<(DVec3, DVec3, Vec<usize>)> {
+    let mut hits = Vec::new();
+    for &target in &mesh.targets {
+        for d in tie_directions(axis) {
+            let ray = Ray::new(target - 4.0 * d, d);
+            hits.push((target, d, hit_by(&mesh.triangles, &ray)));
+        }
+    }
+    hits
+}
+
 /// Exact ties: flat triangles with small binary-fraction corners and rays
 /// at a shared edge or a shared vertex, where the edge functions are
 /// exactly 0. Exactly one triangle owns each such point.
@@ -270,19 +287,15 @@ fn hit_by(triangles: &[[DVec3; 3]], ray: &Ray) -> Vec<usize> {
 fn a_shared_edge_or_vertex_belongs_to_exactly_one_triangle() {
     for axis in 0..3 {
         for mesh in fans(axis) {
-            for &target in &mesh.targets {
-                for d in tie_directions(axis) {
-                    let ray = Ray::new(target - 4.0 * d, d);
-                    let hits = hit_by(&mesh.triangles, &ray);
-                    assert_eq!(
-                        hits.len(),
-                        1,
-                        "{}: a ray along {d} at {target}, on a shared edge \
-                         or vertex: expected exactly one triangle to own it, \
-                         got hits from triangles {hits:?}",
-                        mesh.name
-                    );
-                }
+            for (target, d, hits) in tie_hits(&mesh, axis) {
+                assert_eq!(
+                    hits.len(),
+                    1,
+                    "{}: a ray along {d} at {target}, on a shared edge or \
+                     vertex: expected exactly one triangle to own it, got \
+                     hits from triangles {hits:?}",
+                    mesh.name
+                );
             }
         }
     }
@@ -297,23 +310,19 @@ fn a_shared_edge_or_vertex_belongs_to_exactly_one_triangle() {
 fn triangles_wound_opposite_ways_share_an_edge_once() {
     for axis in 0..3 {
         let mesh = opposite_windings(axis);
-        for &target in &mesh.targets {
-            for d in tie_directions(axis) {
-                let ray = Ray::new(target - 4.0 * d, d);
-                let hits = hit_by(&mesh.triangles, &ray);
-                assert_eq!(
-                    hits.len(),
-                    1,
-                    "{}, P = {}, Q = {}: a ray along {d} at {target} on the \
-                     shared edge: expected exactly 1 hit (the triangle the \
-                     ray sees clockwise walks its edges reversed before the \
-                     tie rule), got {} (from triangles {hits:?})",
-                    mesh.name,
-                    mesh.triangles[0][0],
-                    mesh.triangles[0][1],
-                    hits.len()
-                );
-            }
+        for (target, d, hits) in tie_hits(&mesh, axis) {
+            assert_eq!(
+                hits.len(),
+                1,
+                "{}, P = {}, Q = {}: a ray along {d} at {target} on the \
+                 shared edge: expected exactly 1 hit (the triangle the ray \
+                 sees clockwise walks its edges reversed before the tie \
+                 rule), got {} (from triangles {hits:?})",
+                mesh.name,
+                mesh.triangles[0][0],
+                mesh.triangles[0][1],
+                hits.len()
+            );
         }
     }
 }
@@ -420,43 +429,21 @@ fn a_tiny_edge_function_gets_its_exact_sign() {
     }
 }
 
+/// A direction D toward the surface that every normal in `normals`
+/// faces: D·n ≤ −0.3 for each (no silhouette).
+fn facing(rng: &mut Rng, normals: &[DVec3]) -> DVec3 {
+    let mean = normals.iter().sum::<DVec3>().normalize();
+    loop {
+        let d = -(mean + 0.7 * unit_vector(rng)).normalize();
+        if normals.iter().all(|n| d.dot(*n) <= -0.3) {
+            return d;
+        }
+    }
+}
+
 /// A rotation about an awkward axis by an awkward angle.
 fn awkward_rotation(axis: DVec3, angle: f64) -> DQuat {
     DQuat::from_axis_angle(axis.normalize(), angle)
-}
-
-/// SplitMix64: numbers in [0, 1) from a fixed seed.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn unit_vector(&mut self) -> DVec3 {
-        loop {
-            let p = v(self.next(), self.next(), self.next()) * 2.0 - 1.0;
-            if (0.01..=1.0).contains(&p.length_squared()) {
-                return p.normalize();
-            }
-        }
-    }
-
-    /// A direction D toward the surface that every normal in `normals`
-    /// faces: D·n ≤ −0.3 for each (no silhouette).
-    fn facing(&mut self, normals: &[DVec3]) -> DVec3 {
-        let mean = normals.iter().sum::<DVec3>().normalize();
-        loop {
-            let d = -(mean + 0.7 * self.unit_vector()).normalize();
-            if normals.iter().all(|n| d.dot(*n) <= -0.3) {
-                return d;
-            }
-        }
-    }
 }
 
 /// A closed test mesh: an icosphere, rotated, scaled and moved.
@@ -571,7 +558,7 @@ fn closed_meshes_neither_leak_nor_double_hit() {
             v(1.0e5 + 0.317, -7.3e4 - 0.21, 4.1e4 + 0.777),
         ),
     ];
-    let mut rng = Rng(0x0008_5EED);
+    let mut rng = Rng::new(0x0008_5EED);
     let mut table = Table::new(&[
         "mesh",
         "aimed at",
@@ -600,11 +587,11 @@ fn closed_meshes_neither_leak_nor_double_hit() {
                 let target = if k == 0 {
                     0.5 * (pa + pb)
                 } else {
-                    pa + rng.next() * (pb - pa)
+                    pa + rng.unit() * (pb - pa)
                 };
                 for _ in 0..DIRECTIONS {
-                    let d = rng.facing(&normals);
-                    let from = target - (1.0 + rng.next()) * distance() * d;
+                    let d = facing(&mut rng, &normals);
+                    let from = target - (1.0 + rng.unit()) * distance() * d;
                     rays.push(Ray::new(from, target - from));
                 }
             }
@@ -622,8 +609,8 @@ fn closed_meshes_neither_leak_nor_double_hit() {
             let target = tm.mesh.vertices[i];
             let rays = (0..VERTEX_DIRECTIONS)
                 .map(|_| {
-                    let d = rng.facing(&normals);
-                    let from = target - (1.0 + rng.next()) * distance() * d;
+                    let d = facing(&mut rng, &normals);
+                    let from = target - (1.0 + rng.unit()) * distance() * d;
                     Ray::new(from, target - from)
                 })
                 .collect();

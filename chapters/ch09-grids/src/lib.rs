@@ -6,7 +6,8 @@
 //! (the 3D DDA of Amanatides and Woo), and tests only the objects listed
 //! there; the first cell that holds a hit ends the walk. Good for lots of
 //! similarly sized small objects; bad for a small detailed object in a
-//! big empty scene (the "teapot in a stadium").
+//! big empty scene (the "teapot in a stadium"; both scenes are generated
+//! in `raystep_bench`, their scene files in the chapter's figures crate).
 //!
 //! Student mode: with the feature `exercise` the modules marked below are
 //! replaced by the stubs in `exercise/`.
@@ -52,18 +53,3 @@ pub use walk::walk;
 
 pub use raystep_core::{Aabb, DVec3, Hit, Interval, Ray};
 pub use raystep_world::{Accelerator, Object};
-
-// ---------------------------------------------------------------------
-// Scenes: the grid's good case, its bad case, and the bunny.
-// ---------------------------------------------------------------------
-
-mod scenes;
-mod stability;
-
-pub use scenes::{
-    SCENE_SEED, STADIUM, STEM_SPHERES, STEM_STADIUM, stadium, stadium_toml,
-    uniform_spheres, uniform_spheres_toml, uniform_triangles,
-};
-pub use stability::{
-    RayCase, StabilityScene, adversarial_rays, disagreements, stability_scenes,
-};

@@ -7,7 +7,7 @@ mod common;
 use std::fmt::Debug;
 
 use ch09::{Aabb, DVec3, Dda, Interval, Lattice, Ray, dda_setup};
-use common::setup::setup_fault;
+use common::setup::{lattice_strategy, setup_fault};
 use proptest::prelude::*;
 use raystep_check::{Table, num, seeded, vec3};
 
@@ -101,13 +101,16 @@ fn three(v: DVec3) -> String {
     v.to_array().map(num).join(" ")
 }
 
-#[test]
-fn setup_table() {
+/// The setup of each of `cases` in `lattice`, one row each.
+fn setup_table_of(
+    lattice: &Lattice,
+    cases: Vec<(&'static str, Ray, Interval)>,
+) -> String {
     let mut table = Table::new(&[
         "ray", "cell", "step", "t_max", "t_delta", "t_enter", "t_exit",
     ]);
-    for (name, ray, interval) in cases() {
-        match dda_setup(&lattice(), &ray, interval) {
+    for (name, ray, interval) in cases {
+        match dda_setup(lattice, &ray, interval) {
             Some(d) => table.row(&[
                 name.to_string(),
                 cell(&d),
@@ -120,7 +123,12 @@ fn setup_table() {
             None => table.row(&[name, "none", "", "", "", "", ""]),
         };
     }
-    insta::assert_snapshot!(table.to_string());
+    table.to_string()
+}
+
+#[test]
+fn setup_table() {
+    insta::assert_snapshot!(setup_table_of(&lattice(), cases()));
 }
 
 /// The diagonal ray worked by hand: from (0.5, 0.5) along (1, 2) it meets
@@ -311,36 +319,7 @@ fn cells_of_any_size_anywhere_by_hand() {
 
 #[test]
 fn offset_setup_table() {
-    let mut table = Table::new(&[
-        "ray", "cell", "step", "t_max", "t_delta", "t_enter", "t_exit",
-    ]);
-    for (name, ray, interval) in offset_cases() {
-        match dda_setup(&offset_lattice(), &ray, interval) {
-            Some(d) => table.row(&[
-                name.to_string(),
-                cell(&d),
-                format!("{} {} {}", d.step[0], d.step[1], d.step[2]),
-                three(d.t_max),
-                three(d.t_delta),
-                num(d.t_enter),
-                num(d.t_exit),
-            ]),
-            None => table.row(&[name, "none", "", "", "", "", ""]),
-        };
-    }
-    insta::assert_snapshot!(table.to_string());
-}
-
-fn lattice_strategy() -> impl Strategy<Value = Lattice> {
-    (
-        prop::array::uniform3(-10.0..10.0f64),
-        prop::array::uniform3(0.5..8.0f64),
-        prop::array::uniform3(1usize..12),
-    )
-        .prop_map(|(min, size, cells)| {
-            let min = DVec3::from(min);
-            Lattice::new(Aabb::new(min, min + DVec3::from(size)), cells)
-        })
+    insta::assert_snapshot!(setup_table_of(&offset_lattice(), offset_cases()));
 }
 
 proptest! {

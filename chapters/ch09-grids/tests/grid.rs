@@ -3,14 +3,15 @@
 //! costs in entries and bytes. No exercise needed.
 mod common;
 
-use ch08::SplitMix64;
 use ch09::{
     Aabb, DVec3, Fill, Grid, Lattice, Resolution, cells_for, rule_cells,
-    triangle_overlaps_box, uniform_triangles,
+    triangle_overlaps_box,
 };
+use raystep_bench::{SCENE_SEED, bunny, stadium, uniform_triangles};
 use raystep_check::Table;
+use raystep_check::held_out::Rng;
 
-use common::{bunny, plane_object, sphere_objects};
+use common::{plane_object, sphere_objects};
 
 /// The rule (3·∛N along the longest axis) and the grid it gives, for the
 /// chapter's scenes.
@@ -28,12 +29,9 @@ fn the_rule_on_the_chapters_scenes() {
     ]);
     let bunny = bunny();
     let scenes = [
-        (
-            "uniform, 10 000",
-            uniform_triangles(10_000, ch09::SCENE_SEED),
-        ),
+        ("uniform, 10 000", uniform_triangles(10_000, SCENE_SEED)),
         ("bunny", bunny.clone()),
-        ("bunny in a stadium", ch09::stadium(&bunny)),
+        ("bunny in a stadium", stadium(&bunny)),
     ];
     for (name, triangles) in scenes {
         let boxes =
@@ -62,18 +60,14 @@ fn the_rule_on_the_chapters_scenes() {
 /// triangles crossing many cells.
 #[test]
 fn every_cell_a_triangle_touches_lists_it() {
-    let mut random = SplitMix64::new(5);
+    let mut random = Rng::new(5);
     let mut triangles = bunny();
     let bounds = Aabb::around(triangles.iter().flatten().copied());
     let size = bounds.max - bounds.min;
     for _ in 0..200 {
         let mut corner = || {
             bounds.min
-                + DVec3::new(
-                    random.next_f64(),
-                    random.next_f64(),
-                    random.next_f64(),
-                ) * size
+                + DVec3::new(random.unit(), random.unit(), random.unit()) * size
         };
         triangles.push([corner(), corner(), corner()]);
     }
@@ -82,7 +76,7 @@ fn every_cell_a_triangle_touches_lists_it() {
         let mut missing = 0;
         for (k, t) in triangles.iter().enumerate() {
             for _ in 0..20 {
-                let (mut a, mut b) = (random.next_f64(), random.next_f64());
+                let (mut a, mut b) = (random.unit(), random.unit());
                 if a + b > 1.0 {
                     (a, b) = (1.0 - a, 1.0 - b);
                 }
@@ -101,20 +95,19 @@ fn every_cell_a_triangle_touches_lists_it() {
 /// points is never rejected.
 #[test]
 fn the_exact_test_against_samples() {
-    let mut random = SplitMix64::new(8);
+    let mut random = Rng::new(8);
     let cell = Aabb::new(DVec3::ZERO, DVec3::ONE);
     let (mut rejected, mut sampled_inside) = (0, 0);
     for _ in 0..2000 {
         let mut corner = || {
-            DVec3::new(random.next_f64(), random.next_f64(), random.next_f64())
-                * 3.0
+            DVec3::new(random.unit(), random.unit(), random.unit()) * 3.0
                 - DVec3::ONE
         };
         let t = [corner(), corner(), corner()];
         let overlaps = triangle_overlaps_box(&t, &cell);
         rejected += usize::from(!overlaps);
         for _ in 0..50 {
-            let (mut a, mut b) = (random.next_f64(), random.next_f64());
+            let (mut a, mut b) = (random.unit(), random.unit());
             if a + b > 1.0 {
                 (a, b) = (1.0 - a, 1.0 - b);
             }

@@ -14,7 +14,7 @@ mod common;
 use std::ops::ControlFlow;
 
 use ch09::{Aabb, DVec3, Interval, Lattice, Ray, Visit, dda_setup, walk};
-use common::setup::setup_fault;
+use common::setup::{lattice_strategy, setup_fault};
 use proptest::prelude::*;
 use raystep_check::seeded;
 
@@ -251,18 +251,6 @@ fn the_walk_stops() {
         // `visits` fails past all the cells a ray can cross
         visits(&flat(), &broken, Interval::FORWARD);
     }
-}
-
-fn lattice_strategy() -> impl Strategy<Value = Lattice> {
-    (
-        prop::array::uniform3(-10.0..10.0f64),
-        prop::array::uniform3(0.5..8.0f64),
-        prop::array::uniform3(1usize..12),
-    )
-        .prop_map(|(min, size, cells)| {
-            let min = DVec3::from(min);
-            Lattice::new(Aabb::new(min, min + DVec3::from(size)), cells)
-        })
 }
 
 proptest! {

@@ -5,10 +5,10 @@
 //! sort, then merged in. Each level costs O(N): O(N log N) in all.
 use raystep_core::Aabb;
 
+use crate::builder_io::{Input, Output};
 use crate::events::{
     EventKind, Plane, Side, children, push_events, sweep, worth_splitting,
 };
-use crate::kdtree::{Input, Output};
 use crate::{Event, event_order};
 
 /// Builds the tree over `objects` in box `node`.

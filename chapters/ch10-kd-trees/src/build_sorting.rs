@@ -3,23 +3,13 @@
 //! level: O(N log² N) in all.
 use raystep_core::Aabb;
 
-use crate::events::{
-    Side, children, push_events, side, sweep, worth_splitting,
-};
-use crate::kdtree::{Input, Output};
+use crate::builder_io::{Input, Output};
+use crate::events::{children, push_events, sides, sweep, worth_splitting};
 use crate::{Event, event_order};
 
-/// Builds the subtree over `objects` in box `node` at depth 0.
-pub(crate) fn build(
-    input: &Input,
-    objects: &[u32],
-    node: Aabb,
-    out: &mut Output,
-) {
-    subtree(input, objects, node, 0, out);
-}
-
-fn subtree(
+/// Builds the subtree over `objects` in box `node` at `depth` (the
+/// whole tree: all the objects in the root's box at depth 0).
+pub(crate) fn subtree(
     input: &Input,
     objects: &[u32],
     node: Aabb,
@@ -49,17 +39,7 @@ fn subtree(
         return;
     };
     // Step 4: each object to its side (or both), then the two children.
-    let (mut below, mut above) = (Vec::new(), Vec::new());
-    for (&i, b) in objects.iter().zip(&boxes) {
-        match side(b, &plane) {
-            Side::Below => below.push(i),
-            Side::Above => above.push(i),
-            Side::Both => {
-                below.push(i);
-                above.push(i);
-            }
-        }
-    }
+    let (below, above) = sides(objects, boxes, &plane);
     let (below_box, above_box) = children(&node, plane.axis, plane.position);
     let me = out.split(plane.axis, plane.position);
     subtree(input, &below, below_box, depth + 1, out);

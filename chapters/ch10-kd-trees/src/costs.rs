@@ -1,7 +1,9 @@
 //! The kd-tree's cost model: what a split must save to be worth making,
 //! and how deep a tree may go.
 
-use crate::MAX_DEPTH;
+/// The deepest any tree goes, whatever the rule gives (the traversal's
+/// stack holds one entry per level).
+pub const MAX_DEPTH: usize = 60;
 
 /// The surface area heuristic's constants for a kd-tree: the cost of one
 /// node step against one object test, and the bonus for cutting off

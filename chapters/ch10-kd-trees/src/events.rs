@@ -167,6 +167,28 @@ pub fn side(b: &Aabb, plane: &Plane) -> Side {
     }
 }
 
+/// The objects of the two children: each object (its box in the node
+/// from `boxes`, in the same order) to its [`side`] of `plane`, to both
+/// if the plane cuts it.
+pub fn sides(
+    objects: &[u32],
+    boxes: impl IntoIterator<Item = Aabb>,
+    plane: &Plane,
+) -> (Vec<u32>, Vec<u32>) {
+    let (mut below, mut above) = (Vec::new(), Vec::new());
+    for (&i, b) in objects.iter().zip(boxes) {
+        match side(&b, plane) {
+            Side::Below => below.push(i),
+            Side::Above => above.push(i),
+            Side::Both => {
+                below.push(i);
+                above.push(i);
+            }
+        }
+    }
+    (below, above)
+}
+
 /// The node's two children's boxes.
 pub fn children(node: &Aabb, axis: usize, position: f64) -> (Aabb, Aabb) {
     let (mut below, mut above) = (*node, *node);

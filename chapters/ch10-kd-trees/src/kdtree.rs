@@ -1,9 +1,8 @@
 //! The kd-tree: space cut by axis-aligned planes, again and again, until
 //! each piece (a leaf) holds few objects.
-use raystep_core::{Aabb, DVec3};
-use raystep_world::Object;
+use raystep_core::Aabb;
 
-use crate::{KdCosts, build_events, build_sorting, median};
+use crate::KdCosts;
 
 // ANCHOR: node
 /// One node of a [`KdTree`], stored depth first: an interior node's
@@ -77,10 +76,6 @@ impl Clip {
     }
 }
 
-/// The deepest any tree goes, whatever the rule gives (the traversal's
-/// stack holds one entry per level).
-pub const MAX_DEPTH: usize = 60;
-
 /// The most objects a median tree leaves in a leaf.
 pub const MEDIAN_LEAF: usize = 2;
 
@@ -120,114 +115,7 @@ pub struct KdStats {
     pub sah_cost: f64,
 }
 
-/// What the builders read: each object's box and, for perfect splits,
-/// its triangle.
-pub(crate) struct Input<'a> {
-    pub boxes: &'a [Aabb],
-    pub triangles: Option<&'a [[DVec3; 3]]>,
-    pub costs: KdCosts,
-    pub max_depth: usize,
-}
-
-impl Input<'_> {
-    /// Object `i`'s box inside `node`.
-    pub fn bounds_in(&self, i: u32, node: &Aabb) -> Aabb {
-        let cut = intersection(&self.boxes[i as usize], node);
-        match self.triangles {
-            Some(triangles) => {
-                crate::clipped_bounds(&triangles[i as usize], node)
-                    .map_or(cut, |clipped| intersection(&clipped, &cut))
-            }
-            None => cut,
-        }
-    }
-}
-
-/// The box common to `a` and `b`.
-pub(crate) fn intersection(a: &Aabb, b: &Aabb) -> Aabb {
-    Aabb {
-        min: a.min.max(b.min),
-        max: a.max.min(b.max),
-    }
-}
-
-/// Does the box hold a finite, non-empty stretch of space?
-fn is_bounded(b: &Aabb) -> bool {
-    !b.is_empty() && b.min.is_finite() && b.max.is_finite()
-}
-
-/// What the builders add to: nodes and lists, depth first.
-#[derive(Default)]
-pub(crate) struct Output {
-    pub nodes: Vec<KdNode>,
-    pub items: Vec<u32>,
-}
-
-impl Output {
-    pub fn leaf(&mut self, objects: impl IntoIterator<Item = u32>) {
-        let first = self.items.len() as u32;
-        self.items.extend(objects);
-        // In index order: every builder's leaves read the same.
-        self.items[first as usize..].sort_unstable();
-        let count = self.items.len() as u32 - first;
-        self.nodes.push(KdNode::Leaf { first, count });
-    }
-
-    /// An interior node; its child above is filled in by [`Output::above`].
-    pub fn split(&mut self, axis: usize, plane: f64) -> usize {
-        self.nodes.push(KdNode::Split {
-            axis: axis as u8,
-            plane,
-            above: 0,
-        });
-        self.nodes.len() - 1
-    }
-
-    /// The child above of interior node `node` begins here.
-    pub fn above(&mut self, node: usize) {
-        let next = self.nodes.len() as u32;
-        if let KdNode::Split { above, .. } = &mut self.nodes[node] {
-            *above = next;
-        }
-    }
-}
-
 impl KdTree {
-    /// The tree over `boxes` (object `i` has box `boxes[i]`), cut by
-    /// `builder` with the cost model `costs` (the median builder uses
-    /// only its depth rule). Objects without a finite box go to [`KdTree::unbounded`].
-    pub fn build(boxes: &[Aabb], builder: KdBuilder, costs: KdCosts) -> KdTree {
-        build(boxes, None, builder, costs)
-    }
-
-    /// The tree over triangles; with [`Clip::Triangles`], perfect splits.
-    pub fn for_triangles(
-        triangles: &[[DVec3; 3]],
-        builder: KdBuilder,
-        costs: KdCosts,
-        clip: Clip,
-    ) -> KdTree {
-        let boxes: Vec<Aabb> = triangles
-            .iter()
-            .map(|t| Aabb::around(t.iter().copied()))
-            .collect();
-        let clip = (clip == Clip::Triangles).then_some(triangles);
-        build(&boxes, clip, builder, costs)
-    }
-
-    /// The tree over the objects' boxes ([`Shape::bounds`]).
-    ///
-    /// [`Shape::bounds`]: raystep_core::Shape::bounds
-    pub fn for_objects(
-        objects: &[Object],
-        builder: KdBuilder,
-        costs: KdCosts,
-    ) -> KdTree {
-        let boxes: Vec<Aabb> =
-            objects.iter().map(|o| o.shape.bounds()).collect();
-        KdTree::build(&boxes, builder, costs)
-    }
-
     /// The objects of a leaf.
     pub fn leaf_objects(&self, first: u32, count: u32) -> &[u32] {
         &self.items[first as usize..(first + count) as usize]
@@ -308,44 +196,5 @@ impl KdTree {
             bytes: self.bytes(),
             sah_cost: self.sah_cost(costs),
         }
-    }
-}
-
-/// Sorts out the unbounded objects, then hands the rest to a builder.
-fn build(
-    boxes: &[Aabb],
-    triangles: Option<&[[DVec3; 3]]>,
-    builder: KdBuilder,
-    costs: KdCosts,
-) -> KdTree {
-    let (inside, unbounded): (Vec<u32>, Vec<u32>) =
-        (0..boxes.len() as u32).partition(|&i| is_bounded(&boxes[i as usize]));
-    let bounds = inside
-        .iter()
-        .map(|&i| boxes[i as usize])
-        .reduce(Aabb::union)
-        .unwrap_or(Aabb::EMPTY);
-    let input = Input {
-        boxes,
-        triangles,
-        costs,
-        max_depth: costs.max_depth(inside.len()),
-    };
-    let mut out = Output::default();
-    match builder {
-        KdBuilder::Median => median::build(&input, &inside, bounds, &mut out),
-        KdBuilder::SahSorting => {
-            build_sorting::build(&input, &inside, bounds, &mut out)
-        }
-        KdBuilder::SahEvents => {
-            build_events::build(&input, &inside, bounds, &mut out)
-        }
-    }
-    KdTree {
-        nodes: out.nodes,
-        items: out.items,
-        bounds,
-        unbounded,
-        mailboxing: true,
     }
 }

@@ -17,9 +17,11 @@
 
 mod build_events;
 mod build_sorting;
+mod builder_io;
 mod clip;
 mod costs;
 mod events;
+mod kd_build;
 mod kdtree;
 mod median;
 
@@ -28,13 +30,11 @@ mod median;
 mod split_cost;
 
 pub use clip::clipped_bounds;
-pub use costs::{DEPTH_FACTOR, KdCosts};
+pub use costs::{DEPTH_FACTOR, KdCosts, MAX_DEPTH};
 pub use events::{
     Event, EventKind, Plane, Side, event_order, push_events, side, sweep,
 };
-pub use kdtree::{
-    Clip, KdBuilder, KdNode, KdStats, KdTree, MAX_DEPTH, MEDIAN_LEAF,
-};
+pub use kdtree::{Clip, KdBuilder, KdNode, KdStats, KdTree, MEDIAN_LEAF};
 pub use split_cost::split_cost;
 
 // ---------------------------------------------------------------------
@@ -67,14 +67,4 @@ mod auto;
 pub use auto::{
     FEW, FULLEST_OVER_MEAN, MANY, SPREAD_CELLS, Spread, Structure, auto,
     choose, spread,
-};
-
-// ---------------------------------------------------------------------
-// Stability: the rays and scenes where a kd-tree can go wrong.
-// ---------------------------------------------------------------------
-
-mod stability;
-
-pub use stability::{
-    Answers, KdRayCase, KdScene, answers, kd_disagreements, kd_rays, kd_scenes,
 };

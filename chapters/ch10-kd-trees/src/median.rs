@@ -4,20 +4,12 @@
 use raystep_core::Aabb;
 
 use crate::MEDIAN_LEAF;
-use crate::events::{Plane, Side, children, side};
-use crate::kdtree::{Input, Output};
+use crate::builder_io::{Input, Output};
+use crate::events::{Plane, children, sides};
 
-/// Builds the tree over `objects` in box `node`.
-pub(crate) fn build(
-    input: &Input,
-    objects: &[u32],
-    node: Aabb,
-    out: &mut Output,
-) {
-    subtree(input, objects, node, 0, out);
-}
-
-fn subtree(
+/// Builds the subtree over `objects` in box `node` at `depth` (the
+/// whole tree: all the objects in the root's box at depth 0).
+pub(crate) fn subtree(
     input: &Input,
     objects: &[u32],
     node: Aabb,
@@ -41,17 +33,8 @@ fn subtree(
         cost: 0.0,
         counts: (0, 0),
     };
-    let (mut below, mut above) = (Vec::new(), Vec::new());
-    for &i in objects {
-        match side(&input.bounds_in(i, &node), &plane) {
-            Side::Below => below.push(i),
-            Side::Above => above.push(i),
-            Side::Both => {
-                below.push(i);
-                above.push(i);
-            }
-        }
-    }
+    let boxes = objects.iter().map(|&i| input.bounds_in(i, &node));
+    let (below, above) = sides(objects, boxes, &plane);
     // Step 4: a cut that separates nothing (every object on both
     // sides) makes no progress: a leaf. Without this, tiny cells under
     // larger triangles would split on down to the depth limit.

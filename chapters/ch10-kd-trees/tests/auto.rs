@@ -5,6 +5,7 @@ mod common;
 use std::path::Path;
 
 use ch10::{Aabb, DVec3, Object, Structure, choose, spread};
+use raystep_bench::{SCENE_SEED, stadium, uniform_triangles};
 use raystep_check::{Table, num_places};
 
 fn scene_file(path: &str) -> Vec<Aabb> {
@@ -28,7 +29,7 @@ fn triangle_boxes(triangles: &[[DVec3; 3]]) -> Vec<Aabb> {
 
 #[test]
 fn the_rule_on_the_families() {
-    let bunny = common::bunny();
+    let bunny = raystep_bench::bunny();
     let families = [
         (
             "3 spheres and a plane",
@@ -44,14 +45,14 @@ fn the_rule_on_the_families() {
         ),
         (
             "10 000 small triangles",
-            triangle_boxes(&ch09::uniform_triangles(10_000, ch09::SCENE_SEED)),
+            triangle_boxes(&uniform_triangles(10_000, SCENE_SEED)),
         ),
         ("the bunny", triangle_boxes(&bunny)),
-        ("bunny in a stadium", triangle_boxes(&ch09::stadium(&bunny))),
+        ("bunny in a stadium", triangle_boxes(&stadium(&bunny))),
         (
             "triangles in z = 0",
             triangle_boxes(
-                &ch09::uniform_triangles(1000, 2)
+                &uniform_triangles(1000, 2)
                     .iter()
                     .map(|t| t.map(|v| DVec3::new(v.x, v.y, 0.0)))
                     .collect::<Vec<_>>(),

@@ -10,6 +10,7 @@ use ch08::{
 use ch10::{
     Aabb, Clip, DVec3, Interval, KdBuilder, KdCosts, KdNode, KdTree, MeshKd,
 };
+use raystep_bench::{camera_rays, incoherent_rays, uniform_triangles};
 use raystep_check::{Table, num_places};
 
 fn boxes(triangles: &[[DVec3; 3]]) -> Vec<Aabb> {
@@ -22,18 +23,18 @@ fn boxes(triangles: &[[DVec3; 3]]) -> Vec<Aabb> {
 /// The chapter's triangle scenes: the bunny, small uniform triangles, a
 /// flat scene, and a cluster.
 fn scenes() -> Vec<(&'static str, Vec<[DVec3; 3]>)> {
-    let flat = ch09::uniform_triangles(300, 2)
+    let flat = uniform_triangles(300, 2)
         .iter()
         .map(|t| t.map(|v| DVec3::new(v.x, v.y, 0.0)))
         .collect();
-    let cluster = ch09::uniform_triangles(500, 12)
+    let cluster = uniform_triangles(500, 12)
         .iter()
         .map(|t| t.map(|v| v * 1e-3))
         .chain([[DVec3::splat(-1.0), DVec3::splat(1.0), DVec3::X]])
         .collect();
     vec![
-        ("bunny", common::bunny()),
-        ("uniform 2000", ch09::uniform_triangles(2000, 9)),
+        ("bunny", raystep_bench::bunny()),
+        ("uniform 2000", uniform_triangles(2000, 9)),
         ("flat", flat),
         ("cluster", cluster),
     ]
@@ -167,19 +168,18 @@ fn perfect_splits_list_fewer_triangles() {
 /// splits, on the bunny.
 #[test]
 fn the_mesh_tree_finds_the_bvhs_hits() {
-    let bunny = common::bunny();
+    let bunny = raystep_bench::bunny();
     let bounds = Aabb::around(bunny.iter().flatten().copied());
     let tree = ch08::Bvh::build(
         &ch08::triangle_boxes(&bunny),
         Builder::BinnedSah { bins: 16 },
     );
     let bvh = MeshBvh::new(&bunny, &tree, NodePrecision::Single);
-    let rays: Vec<Ray32> =
-        ch08::camera_rays(BoundingSphere::around_box(&bounds), 48)
-            .iter()
-            .chain(&ch08::incoherent_rays(bounds, 2000, 5))
-            .map(Ray32::rounded)
-            .collect();
+    let rays: Vec<Ray32> = camera_rays(BoundingSphere::around_box(&bounds), 48)
+        .iter()
+        .chain(&incoherent_rays(bounds, 2000, 5))
+        .map(Ray32::rounded)
+        .collect();
     for clip in [Clip::Boxes, Clip::Triangles] {
         let kd =
             MeshKd::new(&bunny, KdBuilder::SahEvents, KdCosts::CHOSEN, clip);

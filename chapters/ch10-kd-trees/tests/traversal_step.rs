@@ -4,8 +4,8 @@
 mod common;
 
 use ch10::{
-    Accelerator, DVec3, Interval, KdBuilder, KdCosts, KdTree, Ray, Split, Step,
-    kd_disagreements, kd_rays, traversal_step,
+    Accelerator, DVec3, Interval, KdBuilder, KdCosts, KdNode, KdTree, Ray,
+    Split, Step, traversal_step,
 };
 use raystep_check::{Table, num};
 
@@ -172,30 +172,33 @@ fn parallel_off_the_plane_stays_on_its_side() {
 /// At t 100 the slack is 1e-7; these rays cross 0.5e-7 outside.
 #[test]
 fn the_slack_keeps_both_children_at_the_ends() {
-    let t_plane = 100.0 + 0.5e-7;
-    expect_step(
-        "crossing x = 2 at t 100.00000005, over t 0..100 (within the \
-         slack EXIT_SLACK·|t_max| = 1e-7 after t_max)",
-        traversal_step(SPLIT, 2.0 - t_plane, 1.0, 0.0, 100.0),
-        Step::Both {
-            near: 1,
-            far: 7,
-            near_until: t_plane,
-            far_from: t_plane,
-        },
-    );
-    let t_plane = 100.0 - 0.5e-7;
-    expect_step(
-        "crossing x = 2 at t 99.99999995, over t 100..200 (within the \
-         slack EXIT_SLACK·|t_min| = 1e-7 before t_min)",
-        traversal_step(SPLIT, 2.0 - t_plane, 1.0, 100.0, 200.0),
-        Step::Both {
-            near: 1,
-            far: 7,
-            near_until: t_plane,
-            far_from: t_plane,
-        },
-    );
+    for (t_plane, t_min, t_max, what) in [
+        (
+            100.0 + 0.5e-7,
+            0.0,
+            100.0,
+            "t 100.00000005, over t 0..100 (within \
+             the slack EXIT_SLACK·|t_max| = 1e-7 after t_max)",
+        ),
+        (
+            100.0 - 0.5e-7,
+            100.0,
+            200.0,
+            "t 99.99999995, over t 100..200 \
+             (within the slack EXIT_SLACK·|t_min| = 1e-7 before t_min)",
+        ),
+    ] {
+        expect_step(
+            &format!("crossing x = 2 at {what}"),
+            traversal_step(SPLIT, 2.0 - t_plane, 1.0, t_min, t_max),
+            Step::Both {
+                near: 1,
+                far: 7,
+                near_until: t_plane,
+                far_from: t_plane,
+            },
+        );
+    }
 }
 
 /// The slack is relative, so at t 0 there is none, and a crossing at
@@ -216,35 +219,72 @@ fn a_crossing_at_t_max_is_not_after_it() {
     );
 }
 
-/// The whole walk, with the student's step, on the bunny and on the
-/// catalogue's rays made from its planes: the same answers as brute
-/// force. The tree is the median one: the SAH builders weigh planes with
-/// exercise 1's `split_cost`, and this test judges exercise 2 alone.
+/// The whole walk, with the student's step, on the bunny: the same
+/// answers as brute force for rays lying in the root's plane (the step's
+/// 0·∞ case: both children all along), rays starting on it, and rays from
+/// far away. The tree is the median one: the SAH builders weigh planes
+/// with exercise 1's `split_cost`, and this test judges exercise 2 alone.
+/// (Every tree on the rays made from all its own planes is
+/// `crates/stability`'s test.)
 #[test]
 fn the_walk_agrees_with_brute_force_on_the_bunny() {
-    let objects: Vec<_> = ch10::kd_scenes(&common::bunny()).remove(0).objects;
+    let objects = common::bunny_objects();
     let tree =
         KdTree::for_objects(&objects, KdBuilder::Median, KdCosts::CHOSEN);
-    let trees: [&dyn Accelerator; 1] = [&tree];
+    let KdNode::Split { axis, plane, .. } = tree.nodes[0] else {
+        panic!("the bunny's median tree is more than a leaf");
+    };
+    let (axis, b) = (axis as usize, tree.bounds);
+    let mut random = ch08::SplitMix64::new(7);
+    let mut rays = Vec::new();
+    for k in 0..240 {
+        let mut r = || random.next_f64();
+        let mut inside = b.min + DVec3::new(r(), r(), r()) * (b.max - b.min);
+        let mut direction = random.unit_vector();
+        match k % 3 {
+            0 => {
+                inside[axis] = plane;
+                direction[axis] = if k % 2 == 0 { 0.0 } else { -0.0 };
+            }
+            1 => inside[axis] = plane,
+            _ => {}
+        }
+        let origin = if k % 3 == 2 {
+            inside - 4.0 * direction
+        } else {
+            inside
+        };
+        rays.push(Ray::new(origin, direction));
+    }
+    // and one ray by hand: down the z axis onto the bunny's middle
+    rays.push(Ray::new(
+        DVec3::new(-0.02, 0.1, 1.0),
+        DVec3::new(0.0, 0.0, -1.0),
+    ));
     let mut wrong = 0;
-    let mut rays = 0;
-    for case in kd_rays(&tree, 30, 7) {
-        rays += case.rays.len();
-        wrong += kd_disagreements(&trees, &objects, &case.rays)[0];
+    for ray in &rays {
+        let t = |a: &dyn Accelerator| {
+            a.closest_hit(&objects, ray, Interval::FORWARD)
+                .map(|h| h.1.t)
+        };
+        let any = |a: &dyn Accelerator| {
+            [Interval::FORWARD, Interval::new(0.0, 1.0)]
+                .map(|interval| a.any_hit(&objects, ray, interval))
+        };
+        let brute = &ch03::BruteForce;
+        if t(&tree) != t(brute) || any(&tree) != any(brute) {
+            wrong += 1;
+        }
     }
     assert!(
         wrong == 0,
         "the kd-tree's walk on the bunny: expected brute force's answers \
-         (closest hit, any hit) for all {rays} rays, got others for {wrong}"
+         (closest hit, any hit) for all {} rays, got others for {wrong}",
+        rays.len()
     );
-    // and one ray by hand: down the z axis onto the bunny's middle
-    let ray = Ray::new(DVec3::new(-0.02, 0.1, 1.0), DVec3::new(0.0, 0.0, -1.0));
-    let hit = tree.closest_hit(&objects, &ray, Interval::FORWARD);
-    let brute = ch03::BruteForce.closest_hit(&objects, &ray, Interval::FORWARD);
-    let (hit, brute) = (hit.map(|h| h.1.t), brute.map(|h| h.1.t));
+    let hit = tree.closest_hit(&objects, &rays[240], Interval::FORWARD);
     assert!(
-        brute.is_some() && hit == brute,
-        "down the z axis onto the bunny's middle: expected the hit at t \
-         {brute:?} (brute force), got {hit:?}"
+        hit.is_some(),
+        "down the z axis onto the bunny's middle: a hit"
     );
 }

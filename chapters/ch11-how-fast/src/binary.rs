@@ -11,7 +11,7 @@ use ch08::{Bvh, MeshAccelerator, MeshHit, Ray32, TraceCounts, outward};
 use raystep_core::{Aabb, DVec3, Interval};
 use smallvec::SmallVec;
 
-use crate::leaf_triangles::{LeafTriangles, Outside};
+use crate::leaf_triangles::Leaves;
 use crate::ray::{FastRay, WIDEN, span};
 
 /// `meta`'s high bit: an interior node (its low bits: the split axis, and
@@ -36,11 +36,8 @@ pub struct Node {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Binary {
     nodes: Vec<Node>,
-    /// The triangles in leaf order, and each one's index in the mesh.
-    triangles: LeafTriangles,
-    ids: Vec<u32>,
-    /// Triangles with no finite box, tested by every ray first.
-    outside: Outside,
+    /// The triangles of its leaves, and those outside it.
+    leaves: Leaves,
 }
 
 impl MeshAccelerator for Binary {
@@ -51,8 +48,7 @@ impl MeshAccelerator for Binary {
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
-        let ray = FastRay::new(ray, self.triangles.lecture())?;
-        self.walk(&ray, interval, false, counts)
+        self.trace::<false>(ray, interval, counts)
     }
 
     /// Does anything meet the ray within `interval`?
@@ -62,9 +58,7 @@ impl MeshAccelerator for Binary {
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> bool {
-        FastRay::new(ray, self.triangles.lecture()).is_some_and(|ray| {
-            self.walk(&ray, interval, true, counts).is_some()
-        })
+        self.trace::<true>(ray, interval, counts).is_some()
     }
 }
 
@@ -90,13 +84,22 @@ impl Binary {
                 }
             })
             .collect();
-        let ordered = tree.order.iter().map(|&i| triangles[i as usize]);
         Binary {
             nodes,
-            triangles: LeafTriangles::new(ordered.collect(), single),
-            ids: tree.order.clone(),
-            outside: Outside::new(triangles, &tree.unbounded),
+            leaves: Leaves::new(triangles, tree, single),
         }
+    }
+
+    /// The closest hit (or, `ANY`, the first found) within `interval`.
+    #[inline(always)]
+    pub(crate) fn trace<const ANY: bool>(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> Option<MeshHit> {
+        let ray = self.leaves.ray(ray)?;
+        self.walk(&ray, interval, ANY, counts)
     }
 
     /// Nodes, and the bytes of everything the walk reads.
@@ -106,10 +109,7 @@ impl Binary {
 
     /// Bytes of nodes, triangles and indices.
     pub fn bytes(&self) -> usize {
-        self.nodes.len() * size_of::<Node>()
-            + self.triangles.bytes()
-            + self.ids.len() * size_of::<u32>()
-            + self.outside.bytes()
+        self.nodes.len() * size_of::<Node>() + self.leaves.bytes()
     }
 
     // ANCHOR: walk
@@ -122,11 +122,12 @@ impl Binary {
         counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         // Step 1: triangles outside the tree (none in a finite mesh).
-        let mut closest = self.outside.closest(ray, interval, any, counts);
+        let mut interval = interval;
+        let outside = &self.leaves.outside;
+        let mut closest = outside.closest(ray, &mut interval, any, counts);
         if any && closest.is_some() {
             return closest;
         }
-        let mut interval = closest.map_or(interval, |h| interval.with_max(h.t));
         if self.nodes.is_empty() {
             return closest;
         }
@@ -151,20 +152,14 @@ impl Binary {
                     continue;
                 }
                 // Step 5: a leaf: its triangles lie side by side.
-                let first = node.first as usize;
-                for j in first..first + node.meta as usize {
-                    counts.triangles += 1;
-                    let hit = self.triangles.test(j, ray, interval);
-                    if let Some(t) = hit {
-                        interval = interval.with_max(t);
-                        span = crate::ray::span(interval);
-                        closest = Some(MeshHit {
-                            triangle: self.ids[j],
-                            t,
-                        });
-                        if any {
-                            return closest;
-                        }
+                let leaf = (node.first, node.meta);
+                let hit =
+                    self.leaves.leaf(leaf, ray, &mut interval, any, counts);
+                if hit.is_some() {
+                    span = crate::ray::span(interval);
+                    closest = hit;
+                    if any {
+                        return closest;
                     }
                 }
             }

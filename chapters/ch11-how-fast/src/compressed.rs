@@ -11,7 +11,7 @@
 //! lattice plane (origin + q·2ᵉ, q = 0…255) is exactly an `f32` — the
 //! decoded box is an `f32` box that contains the child's, and the slab
 //! test with its widened exit runs on it unchanged.
-use crate::ray::{FastRay, WIDEN};
+use crate::ray::FastRay;
 use crate::wide::{Links, WideNode};
 
 /// A leaf's link: its count in the top 4 bits, its first triangle below.
@@ -153,14 +153,7 @@ pub fn scalar_boxes(
             let decode = |q: u8| f32::from(q) * scale[axis] + node.origin[axis];
             let (lo, hi) =
                 (decode(node.qlo[axis][i]), decode(node.qhi[axis][i]));
-            let (enter, exit) = if ray.negative[axis] == 1 {
-                (hi, lo)
-            } else {
-                (lo, hi)
-            };
-            let o = ray.origin[axis];
-            let t0 = (enter - o) * ray.inverse[axis];
-            let t1 = (exit - o) * ray.inverse[axis] * WIDEN;
+            let (t0, t1) = ray.slab(axis, lo, hi);
             near[i] = near[i].max(t0);
             far = far.min(t1);
         }

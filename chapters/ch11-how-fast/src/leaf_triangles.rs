@@ -6,7 +6,7 @@
 //! (exactly) and runs chapter 8's watertight test — its common case
 //! inlined here, every other case handed to chapter 8's own code: the
 //! same answer, bit for bit.
-use ch08::{MeshHit, PreparedRay, Shear, TraceCounts};
+use ch08::{Bvh, MeshHit, PreparedRay, Ray32, Shear, TraceCounts};
 use raystep_core::{DVec2, DVec3, Interval};
 
 use crate::ray::FastRay;
@@ -197,6 +197,83 @@ pub fn watertight(
 }
 // ANCHOR_END: watertight
 
+/// What a fast walk reads besides its nodes: the leaves' triangles side
+/// by side in leaf order, each one's index in the mesh, and the triangles
+/// kept outside the tree.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Leaves {
+    /// The triangles in leaf order.
+    pub triangles: LeafTriangles,
+    /// Each one's index in the mesh.
+    pub ids: Vec<u32>,
+    /// Triangles with no finite box, tested by every ray first.
+    pub outside: Outside,
+}
+
+impl Leaves {
+    /// The leaves of `tree` (built over `triangles`' boxes), in `f32` if
+    /// `single` (and exact).
+    pub fn new(triangles: &[[DVec3; 3]], tree: &Bvh, single: bool) -> Leaves {
+        let ordered = tree.order.iter().map(|&i| triangles[i as usize]);
+        Leaves {
+            triangles: LeafTriangles::new(ordered.collect(), single),
+            ids: tree.order.clone(),
+            outside: Outside::new(triangles, &tree.unbounded),
+        }
+    }
+
+    /// Step 6: the same triangles laid out for the test with SIMD
+    /// ([`LeafTriangles::with_lanes`]).
+    pub fn with_lanes(self) -> Leaves {
+        Leaves {
+            triangles: self.triangles.with_lanes(),
+            ..self
+        }
+    }
+
+    /// `ray` ready for the walk (`None`: a ray not traced).
+    #[inline(always)]
+    pub fn ray(&self, ray: &Ray32) -> Option<FastRay> {
+        FastRay::new(ray, self.triangles.lecture())
+    }
+
+    /// Bytes of the triangles, their indices and those outside.
+    pub fn bytes(&self) -> usize {
+        self.triangles.bytes()
+            + self.ids.len() * size_of::<u32>()
+            + self.outside.bytes()
+    }
+
+    /// A leaf of the walks: its `count` triangles from `first`, each
+    /// tested within `interval`, which every hit shortens; the closest
+    /// hit (or, `any`, the first) as the mesh's triangle.
+    #[inline(always)]
+    pub fn leaf(
+        &self,
+        (first, count): (u32, u32),
+        ray: &FastRay,
+        interval: &mut Interval,
+        any: bool,
+        counts: &mut TraceCounts,
+    ) -> Option<MeshHit> {
+        let mut closest = None;
+        for j in first as usize..(first + count) as usize {
+            counts.triangles += 1;
+            if let Some(t) = self.triangles.test(j, ray, *interval) {
+                *interval = interval.with_max(t);
+                closest = Some(MeshHit {
+                    triangle: self.ids[j],
+                    t,
+                });
+                if any {
+                    break;
+                }
+            }
+        }
+        closest
+    }
+}
+
 /// The triangles kept outside a tree (no finite box: a corner at ±∞ or
 /// NaN), with their indices in the mesh; every ray tests them first.
 /// None in a finite mesh.
@@ -215,16 +292,15 @@ impl Outside {
     pub fn closest(
         &self,
         ray: &FastRay,
-        interval: Interval,
+        interval: &mut Interval,
         any: bool,
         counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
-        let mut interval = interval;
         let mut closest = None;
         for (id, v) in &self.0 {
             counts.triangles += 1;
-            if let Some(t) = watertight(v, ray, interval) {
-                interval = interval.with_max(t);
+            if let Some(t) = watertight(v, ray, *interval) {
+                *interval = interval.with_max(t);
                 closest = Some(MeshHit { triangle: *id, t });
                 if any {
                     break;

@@ -26,6 +26,8 @@ pub mod binary;
 pub mod compressed;
 pub mod leaf_triangles;
 pub mod parallel_build;
+#[cfg(target_arch = "x86_64")]
+mod prefetch;
 pub mod ray;
 pub mod rotations;
 #[cfg(target_arch = "x86_64")]

@@ -59,6 +59,24 @@ impl FastRay {
     }
 }
 
+impl FastRay {
+    /// Chapter 8's slab test along `axis` for the slab `lo ≤ x ≤ hi`:
+    /// where the ray enters it, and where it leaves it, widened. The
+    /// scalar kernels' step for one box on one axis.
+    #[inline(always)]
+    pub fn slab(&self, axis: usize, lo: f32, hi: f32) -> (f32, f32) {
+        let (enter, exit) = if self.negative[axis] == 1 {
+            (hi, lo)
+        } else {
+            (lo, hi)
+        };
+        let o = self.origin[axis];
+        let t0 = (enter - o) * self.inverse[axis];
+        let t1 = (exit - o) * self.inverse[axis] * WIDEN;
+        (t0, t1)
+    }
+}
+
 /// The interval as the box tests take it: its ends in `f32` rounded
 /// outward, the end widened as every exit is.
 #[inline]

@@ -73,12 +73,13 @@ pub fn boxes8_where_available(
     available().then(|| unsafe { boxes8(node, ray, span) })
 }
 
-/// The closest hit, the walk compiled with AVX.
+/// The closest hit (or, `ANY`, the first found), the walk compiled
+/// with AVX.
 ///
 /// # Safety
 /// The CPU must have AVX ([`available`]).
 #[target_feature(enable = "avx")]
-pub fn closest(
+pub fn trace<const ANY: bool>(
     tree: &Wide<8>,
     ray: &Ray32,
     interval: Interval,
@@ -86,58 +87,27 @@ pub fn closest(
 ) -> Option<MeshHit> {
     // SAFETY (of the closure's call): this function runs only on a CPU
     // with AVX, which its callers check.
-    tree.closest_with(ray, interval, counts, |n, r, s| unsafe {
+    tree.trace::<ANY>(ray, interval, counts, |n, r, s| unsafe {
         boxes8(n, r, s)
     })
 }
 
-/// Any hit, the walk compiled with AVX.
-///
-/// # Safety
-/// The CPU must have AVX ([`available`]).
-#[target_feature(enable = "avx")]
-pub fn any(
-    tree: &Wide<8>,
-    ray: &Ray32,
-    interval: Interval,
-    counts: &mut TraceCounts,
-) -> bool {
-    // SAFETY: as in `closest`.
-    tree.any_with(ray, interval, counts, |n, r, s| unsafe { boxes8(n, r, s) })
-}
-
-/// The closest hit, the walk compiled with AVX2: [`closest`] for step
-/// 6, whose triangle test needs AVX2
-/// ([`simd_triangle`](crate::simd_triangle)).
+/// [`trace`], the walk compiled with AVX2: for step 6, whose triangle
+/// test needs AVX2 ([`simd_triangle`](crate::simd_triangle)).
 ///
 /// # Safety
 /// The CPU must have AVX2 ([`available_avx2`]).
 #[target_feature(enable = "avx2")]
-pub fn closest_avx2(
+pub fn trace_avx2<const ANY: bool>(
     tree: &Wide<8>,
     ray: &Ray32,
     interval: Interval,
     counts: &mut TraceCounts,
 ) -> Option<MeshHit> {
-    // SAFETY: as in `closest` (AVX2 includes AVX).
-    tree.closest_with(ray, interval, counts, |n, r, s| unsafe {
+    // SAFETY: as in `trace` (AVX2 includes AVX).
+    tree.trace::<ANY>(ray, interval, counts, |n, r, s| unsafe {
         boxes8(n, r, s)
     })
-}
-
-/// Any hit, the walk compiled with AVX2 (see [`closest_avx2`]).
-///
-/// # Safety
-/// The CPU must have AVX2 ([`available_avx2`]).
-#[target_feature(enable = "avx2")]
-pub fn any_avx2(
-    tree: &Wide<8>,
-    ray: &Ray32,
-    interval: Interval,
-    counts: &mut TraceCounts,
-) -> bool {
-    // SAFETY: as in `closest`.
-    tree.any_with(ray, interval, counts, |n, r, s| unsafe { boxes8(n, r, s) })
 }
 
 /// Does this CPU have what the compressed nodes' kernel needs (AVX2, to
@@ -213,12 +183,13 @@ pub fn compressed_boxes8_where_available(
     available_avx2().then(|| unsafe { compressed_boxes8(node, ray, span) })
 }
 
-/// The closest hit in a compressed tree, the walk compiled with AVX2.
+/// The closest hit (or, `ANY`, the first found) in a compressed tree,
+/// the walk compiled with AVX2.
 ///
 /// # Safety
 /// The CPU must have AVX2 ([`available_avx2`]).
 #[target_feature(enable = "avx2")]
-pub fn closest_compressed(
+pub fn trace_compressed<const ANY: bool>(
     tree: &Wide<8, CompressedNode>,
     ray: &Ray32,
     interval: Interval,
@@ -226,24 +197,7 @@ pub fn closest_compressed(
 ) -> Option<MeshHit> {
     // SAFETY (of the closure's call): this function runs only on a CPU
     // with AVX2, which its callers check.
-    tree.closest_with(ray, interval, counts, |n, r, s| unsafe {
-        compressed_boxes8(n, r, s)
-    })
-}
-
-/// Any hit in a compressed tree, the walk compiled with AVX2.
-///
-/// # Safety
-/// The CPU must have AVX2 ([`available_avx2`]).
-#[target_feature(enable = "avx2")]
-pub fn any_compressed(
-    tree: &Wide<8, CompressedNode>,
-    ray: &Ray32,
-    interval: Interval,
-    counts: &mut TraceCounts,
-) -> bool {
-    // SAFETY: as in `closest_compressed`.
-    tree.any_with(ray, interval, counts, |n, r, s| unsafe {
+    tree.trace::<ANY>(ray, interval, counts, |n, r, s| unsafe {
         compressed_boxes8(n, r, s)
     })
 }

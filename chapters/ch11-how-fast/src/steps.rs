@@ -7,52 +7,106 @@ use raystep_core::{DVec3, Interval};
 
 use crate::binary::Binary;
 use crate::compressed::CompressedNode;
+#[cfg(target_arch = "x86_64")]
+use crate::simd8;
 use crate::wide::{Wide, scalar_boxes};
 
 /// One step of the way: each adds one thing to the one before it.
 /// (Step 1, the baseline, is chapter 8's [`MeshBvh`](ch08::MeshBvh).)
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+///
+/// The steps' one list: their order ([`Step::ALL`]), their names in
+/// tables and on the command line (`raystep bench --fast NAME`) and the
+/// command line's one-line help (each step's first paragraph) all come
+/// from here.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, clap::ValueEnum)]
 pub enum Step {
+    /// Step 2: compact nodes, children ordered by the ray's direction.
+    ///
     /// 2: chapter 8's tree (binned SAH, 16 bins) in compact nodes, each
-    /// box tested when reached, children in the order the ray's
-    /// direction gives.
+    /// box tested when reached, children in the order the ray's direction
+    /// gives.
+    #[value(name = "ordered")]
     Ordered,
+    /// Step 3: and the leaves' triangles in f32.
+    ///
     /// 3: and the leaves' triangles in `f32` (exactly), half the bytes.
+    #[value(name = "leaf-f32")]
     LeafLayout,
+    /// Step 4: and the full-sweep SAH tree.
+    ///
     /// 4: and a better tree: the full-sweep SAH of chapter 8 (a side
     /// step: the steps after it go back to the binned tree).
+    #[value(name = "sweep-tree")]
     SweepTree,
+    /// Step 4b: step 3's tree improved by tree rotations.
+    ///
     /// 4b: step 3's tree improved by tree rotations (another side step).
+    #[value(name = "rotated-tree")]
     RotatedTree,
+    /// Step 5: 4-wide nodes, boxes tested one by one.
+    ///
     /// 5a: and 4-wide nodes, their boxes tested one by one.
+    #[value(name = "bvh4-scalar")]
     Wide4Scalar,
+    /// 4-wide nodes, SSE.
+    ///
     /// 5b: 4-wide nodes, the four boxes tested at once with SSE.
+    #[value(name = "bvh4-sse")]
     Wide4,
+    /// 8-wide nodes, one by one.
+    ///
     /// 5c: 8-wide nodes, one by one.
+    #[value(name = "bvh8-scalar")]
     Wide8Scalar,
+    /// 8-wide nodes, AVX (one by one where the CPU lacks it).
+    ///
     /// 5d: 8-wide nodes, eight at once with AVX (where the CPU has it).
+    #[value(name = "bvh8-avx")]
     Wide8,
+    /// 8-wide nodes compressed to 96 bytes, AVX2 (one by one where the
+    /// CPU lacks it).
+    ///
     /// 5e: 8-wide nodes compressed to 96 bytes, AVX2 (where the CPU has
     /// it).
+    #[value(name = "bvh8-compressed")]
     Compressed8,
+    /// `bvh8-avx` on the full-sweep tree.
+    ///
     /// 5f: 5d on step 4's full-sweep tree (a slower build).
+    #[value(name = "bvh8-avx-sweep")]
     Wide8Sweep,
+    /// `bvh8-compressed` on the full-sweep tree.
+    ///
     /// 5g: 5e on step 4's full-sweep tree.
+    #[value(name = "bvh8-compressed-sweep")]
     Compressed8Sweep,
+    /// Step 6: `bvh8-avx`, each triangle's edges tested at once (AVX2).
+    ///
     /// 6a: 5d, and each triangle's three edges tested at once (AVX2,
     /// where the CPU has it).
+    #[value(name = "bvh8-avx-tri")]
     Wide8Triangles,
+    /// `bvh8-compressed`, each triangle's edges tested at once.
+    ///
     /// 6b: 5e, and each triangle's three edges tested at once.
+    #[value(name = "bvh8-compressed-tri")]
     Compressed8Triangles,
+    /// Step 7: `bvh8-avx-tri`, its tree built on `--threads` threads.
+    ///
     /// 7a: 6a, its tree built on the threads of the current rayon pool
     /// ([`build_parallel`](crate::parallel_build::build_parallel)).
+    #[value(name = "bvh8-par")]
     Wide8Parallel,
+    /// `bvh8-compressed-tri`, its tree built on `--threads` threads.
+    ///
     /// 7b: 6b, its tree built on the pool's threads.
+    #[value(name = "bvh8-compressed-par")]
     Compressed8Parallel,
 }
 
 impl Step {
-    /// Every step, in order.
+    /// Every step, in order: the list [`clap::ValueEnum`] derives from
+    /// the declaration above (a test holds the two equal).
     pub const ALL: [Step; 15] = [
         Step::Ordered,
         Step::LeafLayout,
@@ -71,30 +125,10 @@ impl Step {
         Step::Compressed8Parallel,
     ];
 
-    /// The name tables and the command line use.
-    pub fn name(self) -> &'static str {
-        match self {
-            Step::Ordered => "ordered",
-            Step::LeafLayout => "leaf-f32",
-            Step::SweepTree => "sweep-tree",
-            Step::RotatedTree => "rotated-tree",
-            Step::Wide4Scalar => "bvh4-scalar",
-            Step::Wide4 => "bvh4-sse",
-            Step::Wide8Scalar => "bvh8-scalar",
-            Step::Wide8 => "bvh8-avx",
-            Step::Compressed8 => "bvh8-compressed",
-            Step::Wide8Sweep => "bvh8-avx-sweep",
-            Step::Compressed8Sweep => "bvh8-compressed-sweep",
-            Step::Wide8Triangles => "bvh8-avx-tri",
-            Step::Compressed8Triangles => "bvh8-compressed-tri",
-            Step::Wide8Parallel => "bvh8-par",
-            Step::Compressed8Parallel => "bvh8-compressed-par",
-        }
-    }
-
-    /// The step named `name`.
-    pub fn from_name(name: &str) -> Option<Step> {
-        Step::ALL.into_iter().find(|s| s.name() == name)
+    /// The name tables and the command line use: its `#[value(name)]`.
+    pub fn name(self) -> String {
+        let value = clap::ValueEnum::to_possible_value(&self);
+        value.expect("every step is named").get_name().to_string()
     }
 
     /// The tree builder the step starts from: chapter 8's binned SAH,
@@ -275,6 +309,57 @@ impl FastBvh {
     }
 }
 
+impl FastBvh {
+    /// The closest hit within `interval` (or, `ANY`, the first found),
+    /// counted (`nodes`: nodes reached; a wide node counts once for its
+    /// `W` boxes): the structure's walk with its kernel.
+    fn trace<const ANY: bool>(
+        &self,
+        ray: &Ray32,
+        interval: Interval,
+        counts: &mut TraceCounts,
+    ) -> Option<MeshHit> {
+        match &self.built {
+            Built::Binary(b) => b.trace::<ANY>(ray, interval, counts),
+            Built::Wide4(w, Kernel::Scalar) => {
+                w.trace::<ANY>(ray, interval, counts, scalar_boxes)
+            }
+            #[cfg(target_arch = "x86_64")]
+            Built::Wide4(w, _) => {
+                w.trace::<ANY>(ray, interval, counts, crate::simd4::boxes4)
+            }
+            Built::Wide8(w, Kernel::Scalar) => {
+                w.trace::<ANY>(ray, interval, counts, scalar_boxes)
+            }
+            #[cfg(target_arch = "x86_64")]
+            Built::Wide8(w, Kernel::Avx2) => {
+                // SAFETY: the kernel is Avx2 only where `avx2()` said so.
+                unsafe { simd8::trace_avx2::<ANY>(w, ray, interval, counts) }
+            }
+            #[cfg(target_arch = "x86_64")]
+            Built::Wide8(w, _) => {
+                // SAFETY: the kernel is Avx only where `avx()` said so.
+                unsafe { simd8::trace::<ANY>(w, ray, interval, counts) }
+            }
+            Built::Compressed8(w, Kernel::Scalar) => w.trace::<ANY>(
+                ray,
+                interval,
+                counts,
+                crate::compressed::scalar_boxes,
+            ),
+            #[cfg(target_arch = "x86_64")]
+            Built::Compressed8(w, _) => {
+                // SAFETY: the kernel is Avx2 only where `avx2()` said so.
+                unsafe {
+                    simd8::trace_compressed::<ANY>(w, ray, interval, counts)
+                }
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            _ => unreachable!("SIMD kernels are chosen on x86-64 only"),
+        }
+    }
+}
+
 impl MeshAccelerator for FastBvh {
     /// The closest hit within `interval`, counted (`nodes`: nodes
     /// reached; a wide node counts once for its `W` boxes).
@@ -284,44 +369,7 @@ impl MeshAccelerator for FastBvh {
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
-        match &self.built {
-            Built::Binary(b) => b.closest_hit(ray, interval, counts),
-            Built::Wide4(w, Kernel::Scalar) => {
-                w.closest_with(ray, interval, counts, scalar_boxes)
-            }
-            #[cfg(target_arch = "x86_64")]
-            Built::Wide4(w, _) => {
-                w.closest_with(ray, interval, counts, crate::simd4::boxes4)
-            }
-            Built::Wide8(w, Kernel::Scalar) => {
-                w.closest_with(ray, interval, counts, scalar_boxes)
-            }
-            #[cfg(target_arch = "x86_64")]
-            Built::Wide8(w, Kernel::Avx2) => {
-                // SAFETY: the kernel is Avx2 only where `avx2()` said so.
-                unsafe { crate::simd8::closest_avx2(w, ray, interval, counts) }
-            }
-            #[cfg(target_arch = "x86_64")]
-            Built::Wide8(w, _) => {
-                // SAFETY: the kernel is Avx only where `avx()` said so.
-                unsafe { crate::simd8::closest(w, ray, interval, counts) }
-            }
-            Built::Compressed8(w, Kernel::Scalar) => w.closest_with(
-                ray,
-                interval,
-                counts,
-                crate::compressed::scalar_boxes,
-            ),
-            #[cfg(target_arch = "x86_64")]
-            Built::Compressed8(w, _) => {
-                // SAFETY: the kernel is Avx2 only where `avx2()` said so.
-                unsafe {
-                    crate::simd8::closest_compressed(w, ray, interval, counts)
-                }
-            }
-            #[cfg(not(target_arch = "x86_64"))]
-            _ => unreachable!("SIMD kernels are chosen on x86-64 only"),
-        }
+        self.trace::<false>(ray, interval, counts)
     }
 
     /// Does anything meet the ray within `interval`?
@@ -331,44 +379,7 @@ impl MeshAccelerator for FastBvh {
         interval: Interval,
         counts: &mut TraceCounts,
     ) -> bool {
-        match &self.built {
-            Built::Binary(b) => b.any_hit(ray, interval, counts),
-            Built::Wide4(w, Kernel::Scalar) => {
-                w.any_with(ray, interval, counts, scalar_boxes)
-            }
-            #[cfg(target_arch = "x86_64")]
-            Built::Wide4(w, _) => {
-                w.any_with(ray, interval, counts, crate::simd4::boxes4)
-            }
-            Built::Wide8(w, Kernel::Scalar) => {
-                w.any_with(ray, interval, counts, scalar_boxes)
-            }
-            #[cfg(target_arch = "x86_64")]
-            Built::Wide8(w, Kernel::Avx2) => {
-                // SAFETY: the kernel is Avx2 only where `avx2()` said so.
-                unsafe { crate::simd8::any_avx2(w, ray, interval, counts) }
-            }
-            #[cfg(target_arch = "x86_64")]
-            Built::Wide8(w, _) => {
-                // SAFETY: the kernel is Avx only where `avx()` said so.
-                unsafe { crate::simd8::any(w, ray, interval, counts) }
-            }
-            Built::Compressed8(w, Kernel::Scalar) => w.any_with(
-                ray,
-                interval,
-                counts,
-                crate::compressed::scalar_boxes,
-            ),
-            #[cfg(target_arch = "x86_64")]
-            Built::Compressed8(w, _) => {
-                // SAFETY: the kernel is Avx2 only where `avx2()` said so.
-                unsafe {
-                    crate::simd8::any_compressed(w, ray, interval, counts)
-                }
-            }
-            #[cfg(not(target_arch = "x86_64"))]
-            _ => unreachable!("SIMD kernels are chosen on x86-64 only"),
-        }
+        self.trace::<true>(ray, interval, counts).is_some()
     }
 }
 
@@ -393,5 +404,18 @@ fn avx() -> bool {
     #[cfg(not(target_arch = "x86_64"))]
     {
         false
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::ValueEnum;
+
+    use super::Step;
+
+    /// [`Step::ALL`] is the declaration's order, as clap lists it.
+    #[test]
+    fn all_is_the_declared_list() {
+        assert_eq!(Step::ALL.as_slice(), Step::value_variants());
     }
 }

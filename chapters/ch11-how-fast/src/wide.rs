@@ -7,7 +7,7 @@ use ch08::{Bvh, MeshHit, Ray32, TraceCounts, outward};
 use raystep_core::{DVec3, Interval};
 use smallvec::SmallVec;
 
-use crate::leaf_triangles::{LeafTriangles, Outside};
+use crate::leaf_triangles::Leaves;
 use crate::ray::{FastRay, span};
 
 // ANCHOR: wide_node
@@ -60,9 +60,7 @@ pub struct Wide<const W: usize, N = WideNode<W>> {
     pub(crate) nodes: Vec<N>,
     /// The root as a child: a node, or a leaf if the tree is one leaf.
     root: Option<Entry>,
-    triangles: LeafTriangles,
-    ids: Vec<u32>,
-    outside: Outside,
+    leaves: Leaves,
 }
 
 impl<const W: usize> Wide<W> {
@@ -85,13 +83,10 @@ impl<const W: usize> Wide<W> {
                 Entry::default()
             }
         });
-        let ordered = tree.order.iter().map(|&i| triangles[i as usize]);
         Wide {
             nodes,
             root,
-            triangles: LeafTriangles::new(ordered.collect(), single),
-            ids: tree.order.clone(),
-            outside: Outside::new(triangles, &tree.unbounded),
+            leaves: Leaves::new(triangles, tree, single),
         }
     }
     // ANCHOR_END: collapse
@@ -99,7 +94,7 @@ impl<const W: usize> Wide<W> {
     /// Step 6: the same tree, its triangles tested three edges at once
     /// where the CPU can.
     pub fn with_lanes(mut self) -> Self {
-        self.triangles = self.triangles.with_lanes();
+        self.leaves = self.leaves.with_lanes();
         self
     }
 
@@ -108,9 +103,7 @@ impl<const W: usize> Wide<W> {
         Wide {
             nodes: self.nodes.iter().map(f).collect(),
             root: self.root,
-            triangles: self.triangles,
-            ids: self.ids,
-            outside: self.outside,
+            leaves: self.leaves,
         }
     }
 }
@@ -123,10 +116,7 @@ impl<const W: usize, N: Links> Wide<W, N> {
 
     /// Bytes of nodes, triangles and indices.
     pub fn bytes(&self) -> usize {
-        self.nodes.len() * size_of::<N>()
-            + self.triangles.bytes()
-            + self.ids.len() * size_of::<u32>()
-            + self.outside.bytes()
+        self.nodes.len() * size_of::<N>() + self.leaves.bytes()
     }
 
     /// The closest hit (or, `any`, the first hit found) of a prepared ray,
@@ -144,11 +134,12 @@ impl<const W: usize, N: Links> Wide<W, N> {
         boxes: impl Fn(&N, &FastRay, (f32, f32)) -> ([f32; W], u32),
     ) -> Option<MeshHit> {
         // Step 1: triangles outside the tree (none in a finite mesh).
-        let mut closest = self.outside.closest(ray, interval, any, counts);
+        let mut interval = interval;
+        let outside = &self.leaves.outside;
+        let mut closest = outside.closest(ray, &mut interval, any, counts);
         if any && closest.is_some() {
             return closest;
         }
-        let mut interval = closest.map_or(interval, |h| interval.with_max(h.t));
         // ANCHOR: wide_walk
         // The stack: 64 children on the call stack (not cleared for each
         // ray), more on the heap.
@@ -171,20 +162,14 @@ impl<const W: usize, N: Links> Wide<W, N> {
             counts.nodes += 1;
             if entry.count > 0 {
                 // Step 3: a leaf: its triangles, side by side.
-                let first = entry.child as usize;
-                for j in first..first + entry.count as usize {
-                    counts.triangles += 1;
-                    let hit = self.triangles.test(j, ray, interval);
-                    if let Some(t) = hit {
-                        interval = interval.with_max(t);
-                        span = crate::ray::span(interval);
-                        closest = Some(MeshHit {
-                            triangle: self.ids[j],
-                            t,
-                        });
-                        if any {
-                            return closest;
-                        }
+                let leaf = (entry.child, entry.count);
+                let hit =
+                    self.leaves.leaf(leaf, ray, &mut interval, any, counts);
+                if hit.is_some() {
+                    span = crate::ray::span(interval);
+                    closest = hit;
+                    if any {
+                        return closest;
                     }
                 }
                 continue;
@@ -222,7 +207,7 @@ impl<const W: usize, N: Links> Wide<W, N> {
                 // later.
                 #[cfg(target_arch = "x86_64")]
                 if e.count == 0 {
-                    crate::simd4::prefetch(&self.nodes[e.child as usize]);
+                    crate::prefetch::prefetch(&self.nodes[e.child as usize]);
                 }
                 stack.push(*e);
             }
@@ -232,31 +217,18 @@ impl<const W: usize, N: Links> Wide<W, N> {
         closest
     }
 
-    /// The closest hit, boxes tested by `boxes` (see [`Wide::walk`]).
+    /// The closest hit (or, `ANY`, the first found), boxes tested by
+    /// `boxes` (see [`Wide::walk`]).
     #[inline(always)]
-    pub(crate) fn closest_with(
+    pub(crate) fn trace<const ANY: bool>(
         &self,
         ray: &Ray32,
         interval: Interval,
         counts: &mut TraceCounts,
         boxes: impl Fn(&N, &FastRay, (f32, f32)) -> ([f32; W], u32),
     ) -> Option<MeshHit> {
-        let ray = FastRay::new(ray, self.triangles.lecture())?;
-        self.walk(&ray, interval, false, counts, boxes)
-    }
-
-    /// Any hit, boxes tested by `boxes`.
-    #[inline(always)]
-    pub(crate) fn any_with(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-        boxes: impl Fn(&N, &FastRay, (f32, f32)) -> ([f32; W], u32),
-    ) -> bool {
-        FastRay::new(ray, self.triangles.lecture()).is_some_and(|ray| {
-            self.walk(&ray, interval, true, counts, boxes).is_some()
-        })
+        let ray = self.leaves.ray(ray)?;
+        self.walk(&ray, interval, ANY, counts, boxes)
     }
 }
 
@@ -325,15 +297,7 @@ pub fn scalar_boxes<const W: usize>(
     for i in 0..W {
         let mut far = t_max;
         for axis in 0..3 {
-            let (lo, hi) = (node.lo[axis][i], node.hi[axis][i]);
-            let (enter, exit) = if ray.negative[axis] == 1 {
-                (hi, lo)
-            } else {
-                (lo, hi)
-            };
-            let o = ray.origin[axis];
-            let t0 = (enter - o) * ray.inverse[axis];
-            let t1 = (exit - o) * ray.inverse[axis] * crate::ray::WIDEN;
+            let (t0, t1) = ray.slab(axis, node.lo[axis][i], node.hi[axis][i]);
             near[i] = near[i].max(t0);
             far = far.min(t1);
         }

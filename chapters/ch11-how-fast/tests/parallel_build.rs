@@ -5,13 +5,10 @@
 //! top is many levels deep.
 mod common;
 
-use common::{agree, bunny};
+use common::{rays, truth, wrong};
+use raystep_bench::bunny;
 
-use ch08::{
-    BoundingSphere, Builder, Bvh, Interval, MAX_LEAF, MeshAccelerator, MeshBvh,
-    NodePrecision, Ray32, TraceCounts, camera_rays, incoherent_rays,
-    triangle_boxes,
-};
+use ch08::{Builder, Bvh, MAX_LEAF, triangle_boxes};
 use ch11::parallel_build::{build_parallel, build_parallel_with};
 use ch11::{FastBvh, Step};
 use raystep_core::{Aabb, DVec3};
@@ -135,38 +132,11 @@ fn the_tree_answers_every_ray_as_brute_force_does() {
     let triangles = bunny();
     let tree = build_parallel_with(&triangle_boxes(&triangles), 16, PART);
     let fast = FastBvh::from_tree(&triangles, &tree, Step::LeafLayout);
-    let median = Bvh::build(&triangle_boxes(&triangles), Builder::Median);
-    let brute = MeshBvh::new(&triangles, &median, NodePrecision::Double);
-    let bounds = Aabb::around(triangles.iter().flatten().copied());
-    let sphere = BoundingSphere::around_box(&bounds);
-    let rays: Vec<Ray32> = camera_rays(sphere, 24)
-        .iter()
-        .chain(&incoherent_rays(bounds, 600, 11))
-        .map(Ray32::rounded)
-        .collect();
-    let (mut closest, mut any, mut hits) = (0, 0, 0);
-    let mut counts = TraceCounts::default();
-    for ray in &rays {
-        // The closest hit, and whether anything is hit up to half its
-        // `t` and up to just past it (up to 10 for a miss).
-        let truth = brute.brute_force(ray, Interval::FORWARD);
-        let ours = fast.closest_hit(ray, Interval::FORWARD, &mut counts);
-        closest += usize::from(!agree(truth, ours));
-        let ends = match truth {
-            Some(hit) => vec![0.5 * hit.t, hit.t * (1.0 + 1e-12)],
-            None => vec![10.0],
-        };
-        hits += usize::from(truth.is_some());
-        for end in ends {
-            let interval = Interval::new(0.0, end);
-            let blocked = brute.brute_force(ray, interval).is_some();
-            any += usize::from(
-                fast.any_hit(ray, interval, &mut counts) != blocked,
-            );
-        }
-    }
+    let rays = rays(&triangles, 24, 600);
+    let truth = truth(&triangles, &rays);
+    let hits = truth.closest.iter().filter(|hit| hit.is_some()).count();
     assert!(hits > rays.len() / 10, "only {hits} hits");
-    assert_eq!((closest, any), (0, 0));
+    assert_eq!(wrong(&fast, &rays, &truth), (0, 0));
 }
 
 /// A box of half-size `r` around `c`.

@@ -4,13 +4,10 @@
 //! tiny or deep trees come through whole.
 mod common;
 
-use common::{agree, bunny};
+use common::{rays, truth, wrong};
+use raystep_bench::bunny;
 
-use ch08::{
-    BoundingSphere, Builder, Bvh, Interval, MeshAccelerator, MeshBvh, MeshHit,
-    NodePrecision, Ray32, TraceCounts, camera_rays, incoherent_rays,
-    triangle_boxes,
-};
+use ch08::{Builder, Bvh, triangle_boxes};
 use ch11::rotations::{Rotations, rotate};
 use ch11::{FastBvh, Step};
 use raystep_core::{Aabb, DVec3};
@@ -93,37 +90,16 @@ fn rotations_improve_a_median_tree() {
 fn a_rotated_tree_answers_as_brute_force_does() {
     let triangles = bunny();
     let boxes = triangle_boxes(&triangles);
-    let bounds = Aabb::around(triangles.iter().flatten().copied());
-    let sphere = BoundingSphere::around_box(&bounds);
-    let rays: Vec<Ray32> = camera_rays(sphere, 24)
-        .iter()
-        .chain(&incoherent_rays(bounds, 600, 11))
-        .map(Ray32::rounded)
-        .collect();
-    let median = Bvh::build(&boxes, Builder::Median);
-    let brute = MeshBvh::new(&triangles, &median, NodePrecision::Double);
-    let truth: Vec<Option<MeshHit>> = rays
-        .iter()
-        .map(|ray| brute.brute_force(ray, Interval::FORWARD))
-        .collect();
-    assert!(truth.iter().filter(|hit| hit.is_some()).count() > 100);
+    let rays = rays(&triangles, 24, 600);
+    let truth = truth(&triangles, &rays);
+    assert!(truth.closest.iter().filter(|hit| hit.is_some()).count() > 100);
     for builder in [Builder::BinnedSah { bins: 16 }, Builder::Median] {
         let built = Bvh::build(&boxes, builder);
         let mut tree = built.clone();
         rotate(&mut tree);
         assert_ne!(tree, built, "{}: nothing rotated", builder.name());
         let fast = FastBvh::from_tree(&triangles, &tree, Step::LeafLayout);
-        let mut counts = TraceCounts::default();
-        let wrong = rays
-            .iter()
-            .zip(&truth)
-            .filter(|(ray, truth)| {
-                let ours =
-                    fast.closest_hit(ray, Interval::FORWARD, &mut counts);
-                !agree(**truth, ours)
-            })
-            .count();
-        assert_eq!(wrong, 0, "{}", builder.name());
+        assert_eq!(wrong(&fast, &rays, &truth), (0, 0), "{}", builder.name());
     }
 }
 

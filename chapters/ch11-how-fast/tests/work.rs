@@ -5,18 +5,14 @@
 //! (4b) change it a little; wide nodes (5) cut the nodes reached by about
 //! W/2; the triangle test (6) and the parallel build (7, the same tree
 //! here) change no count.
-mod common;
-
-use common::bunny;
-
 use std::fmt::Write;
 
 use ch08::{
     BoundingSphere, Builder, Bvh, Interval, MeshAccelerator, MeshBvh,
-    NodePrecision, Ray32, TraceCounts, camera_rays, incoherent_rays,
-    triangle_boxes,
+    NodePrecision, Ray32, TraceCounts, triangle_boxes,
 };
 use ch11::{FastBvh, Step};
+use raystep_bench::{bunny, camera_rays, incoherent_rays};
 use raystep_core::Aabb;
 
 /// Nodes reached and triangle tests per ray, over `rays`.
@@ -81,7 +77,7 @@ fn the_work_of_each_step() {
         };
         let (nodes, bytes) = fast.nodes();
         row(
-            step.name(),
+            &step.name(),
             nodes,
             bytes,
             per_ray(&camera, trace),

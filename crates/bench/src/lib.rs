@@ -8,6 +8,10 @@
 //! sample against brute force. With the `peers` feature the Rust BVH
 //! libraries obvhs and bvh run beside ours; with `embree`, Intel's Embree
 //! too, its library loaded at run time (reported skipped where missing).
+//!
+//! Its inputs are the ones every measurement and test of chapters 8–11
+//! shares: the mesh ray sets, the tightness measurements' random lines and
+//! the generated scenes of chapter 9.
 #![deny(missing_docs)]
 
 mod built;
@@ -17,9 +21,12 @@ mod error;
 mod methods;
 #[cfg(feature = "peers")]
 mod peers;
+mod ray_sets;
 mod rays;
 mod report;
 mod run;
+mod scenes;
+mod tightness_lines;
 
 use std::path::{Path, PathBuf};
 
@@ -31,6 +38,7 @@ use raystep_scene::Mesh;
 pub use built::Built;
 pub use error::BenchError;
 pub use methods::{GridSpec, KdSpec, Method};
+pub use ray_sets::{camera_rays, incoherent_rays};
 pub use rays::{
     Question, RAY_BYTES, RaySet, incoherent, primary, ray_bytes, read_rays,
     shadow,
@@ -41,6 +49,11 @@ pub use run::{
     Answer, MISS, OWN_TEST_TOLERANCE, agree, agree_within, compare, median,
     trace,
 };
+pub use scenes::{
+    SCENE_SEED, STADIUM, stadium, triangle_objects, uniform_spheres,
+    uniform_triangles,
+};
+pub use tightness_lines::{TIGHTNESS_SEED, sampling_sphere};
 
 /// What to benchmark.
 #[derive(Clone, Debug)]
@@ -83,6 +96,22 @@ pub fn load_triangles(file: &Path) -> Result<Vec<[DVec3; 3]>, BenchError> {
     Ok((0..mesh.triangles.len())
         .map(|k| mesh.triangle(k))
         .collect())
+}
+
+/// A mesh of `shared/meshes/README.md` (`bunny.obj`, `bunny-235k.obj`):
+/// in `../shared/meshes` beside the workspace.
+pub fn shared_mesh(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/meshes")
+        .join(name)
+}
+
+/// The Stanford bunny's triangles (3 674), for the tests: a missing or
+/// broken `bunny.obj` panics, naming the file.
+pub fn bunny() -> Vec<[DVec3; 3]> {
+    load_triangles(&shared_mesh("bunny.obj")).unwrap_or_else(|e| {
+        panic!("{e} (the bunny lives in ../shared/meshes beside the workspace)")
+    })
 }
 
 /// A finished benchmark: the report, and the first method's answers on

@@ -1,12 +1,13 @@
 //! The ray sets a benchmark traces: generated (primary, shadow,
-//! incoherent; seeded) or read from a file of little-endian `f32`s.
+//! incoherent; seeded; in `f32`) or read from a file of little-endian
+//! `f32`s.
 use std::path::Path;
 
 use ch08::{BoundingSphere, MeshAccelerator, MeshBvh, Ray32, TraceCounts};
 use raystep_core::glam::Vec3;
 use raystep_core::{Aabb, DVec3, Interval};
 
-use crate::BenchError;
+use crate::{BenchError, camera_rays, incoherent_rays};
 
 /// What a ray set asks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -100,7 +101,7 @@ pub fn primary(bounds: &Aabb, size: u32) -> RaySet {
     RaySet {
         name: "primary".into(),
         question: Question::Closest,
-        rays: ch08::camera_rays(sphere, size)
+        rays: camera_rays(sphere, size)
             .iter()
             .map(Ray32::rounded)
             .collect(),
@@ -113,7 +114,7 @@ pub fn incoherent(bounds: &Aabb, count: usize, seed: u64) -> RaySet {
     RaySet {
         name: "incoherent".into(),
         question: Question::Closest,
-        rays: ch08::incoherent_rays(*bounds, count, seed)
+        rays: incoherent_rays(*bounds, count, seed)
             .iter()
             .map(Ray32::rounded)
             .collect(),

@@ -160,13 +160,15 @@ fn dedent(lines: &[&str]) -> String {
     out
 }
 
-/// For `chapters/<ch>/src/<e>.rs`, the student's stub
+/// For an exercise's module `chapters/<ch>/src/**/<e>.rs` (directly in
+/// `src/`, or in the folder of its part of the lecture, as chapter 8's
+/// `src/primitives/slab.rs`), the student's stub
 /// `chapters/<ch>/exercise/<e>.rs`, if the chapter has one.
 pub fn exercise_stub(file: &Path) -> Option<PathBuf> {
-    let src = file.parent()?;
-    if src.file_name()? != "src" {
-        return None;
-    }
+    let src = file
+        .ancestors()
+        .skip(1)
+        .find(|dir| dir.file_name() == Some("src".as_ref()))?;
     let stub = src.parent()?.join("exercise").join(file.file_name()?);
     stub.is_file().then_some(stub)
 }
@@ -174,6 +176,24 @@ pub fn exercise_stub(file: &Path) -> Option<PathBuf> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_exercise_module_in_a_part_s_folder_has_its_stub() {
+        let dir = std::env::temp_dir()
+            .join(format!("raystep-book-stub-{}", std::process::id()));
+        let chapter = dir.join("chapters/ch08-x");
+        std::fs::create_dir_all(chapter.join("src/part")).unwrap();
+        std::fs::create_dir_all(chapter.join("exercise")).unwrap();
+        for file in ["exercise/slab.rs", "src/part/slab.rs", "src/lib.rs"] {
+            std::fs::write(chapter.join(file), "").unwrap();
+        }
+        let stub = chapter.join("exercise/slab.rs");
+        let nested = exercise_stub(&chapter.join("src/part/slab.rs"));
+        let not_one = exercise_stub(&chapter.join("src/lib.rs"));
+        std::fs::remove_dir_all(&dir).unwrap();
+        assert_eq!(nested, Some(stub));
+        assert_eq!(not_one, None);
+    }
 
     const FILE: &str = "\
 use x;

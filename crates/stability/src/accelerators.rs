@@ -17,12 +17,15 @@
 use std::sync::OnceLock;
 
 use ch08::{Builder, Bvh};
-use ch10::{KdBuilder, KdCosts, KdTree, answers, kd_rays, kd_scenes};
+use ch10::{KdBuilder, KdCosts, KdTree};
 use raystep_core::Ray;
 use raystep_world::{Accelerator, Object};
 
 use crate::scenes::bunny;
-use crate::{Budget, Case, Count, Expect};
+use crate::{
+    Answers, Budget, Case, Count, Expect, adversarial_rays, disagreements_by,
+    kd_rays, kd_scenes,
+};
 
 /// The group's name in the table.
 const GROUP: &str = "accelerators (objects)";
@@ -32,31 +35,15 @@ const GROUP: &str = "accelerators (objects)";
 /// 2·10⁻¹⁸ at t = 5·10⁻⁷).
 pub const TIE: f64 = 1e-11;
 
-/// Do two answers ([`answers`]) agree, closest `t`s within [`TIE`]?
-fn agree(a: &ch10::Answers, b: &ch10::Answers) -> bool {
+/// Do two answers ([`answers`](crate::answers)) agree, closest `t`s
+/// within [`TIE`]?
+fn agree(a: &Answers, b: &Answers) -> bool {
     let t = match (a.0, b.0) {
         (None, None) => true,
         (Some(x), Some(y)) => (x - y).abs() <= TIE * x.abs().max(1.0),
         _ => false,
     };
     t && a.1 == b.1 && a.2 == b.2
-}
-
-/// How many of `rays` each of `accelerators` answers unlike brute force.
-fn disagreements(
-    accelerators: &[&dyn Accelerator],
-    objects: &[Object],
-    rays: &[Ray],
-) -> Vec<usize> {
-    let mut wrong = vec![0; accelerators.len()];
-    for ray in rays {
-        let truth = answers(&ch03::BruteForce, objects, ray);
-        for (count, accelerator) in wrong.iter_mut().zip(accelerators) {
-            let ours = answers(*accelerator, objects, ray);
-            *count += usize::from(!agree(&ours, &truth));
-        }
-    }
-    wrong
 }
 
 /// A case of rays made from the kd-tree's planes.
@@ -199,13 +186,11 @@ fn make_rays(built: &Built, rays: Rays, count: usize) -> Vec<Ray> {
             .find(|case| case.name == name)
             .map(|case| case.rays)
             .unwrap_or_default(),
-        Rays::Grid(name) => {
-            ch09::adversarial_rays(&built.grid.lattice, count, 17)
-                .into_iter()
-                .find(|case| case.name == name)
-                .map(|case| case.rays)
-                .unwrap_or_default()
-        }
+        Rays::Grid(name) => adversarial_rays(&built.grid.lattice, count, 17)
+            .into_iter()
+            .find(|case| case.name == name)
+            .map(|case| case.rays)
+            .unwrap_or_default(),
     }
 }
 
@@ -258,7 +243,7 @@ fn run(budget: &Budget, rays: Rays) -> Vec<(Count, Expect)> {
             methods.iter().map(|(_, m)| m.as_ref()).collect();
         let wrong = asked
             .par_chunks(256)
-            .map(|chunk| disagreements(&accelerators, objects, chunk))
+            .map(|chunk| disagreements_by(&accelerators, objects, chunk, agree))
             .reduce(
                 || vec![0; accelerators.len()],
                 |a, b| a.iter().zip(&b).map(|(x, y)| x + y).collect(),

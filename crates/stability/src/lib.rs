@@ -15,18 +15,38 @@
 #![deny(missing_docs)]
 
 pub mod accelerators;
+pub mod disagreements;
+mod edge_rays;
+pub mod grid_rays;
 pub mod inputs;
+pub mod kd_rays;
 pub mod media;
 pub mod meshes;
 pub mod mutate;
 pub mod offsets;
 pub mod polygons;
+mod ray_cases;
 pub mod scenes;
 pub mod solvers;
 pub mod table;
+mod trials;
 pub mod triangles;
 
 use serde::{Deserialize, Serialize};
+
+// The dangerous rays and scenes of chapters 9 and 10 (grids, kd-trees),
+// and the count of answers unlike brute force's.
+pub use disagreements::{
+    Answers, answers, disagreements, disagreements_by, kd_disagreements,
+};
+// Rays at the edges two triangles share, and the surfaces they aim at
+// (chapter 8's leak counts).
+pub use edge_rays::{
+    EDGE_REACH, LeakSurface, leak_surfaces, leaks, shared_edge_rays,
+};
+pub use grid_rays::{StabilityScene, adversarial_rays, stability_scenes};
+pub use kd_rays::{KdScene, kd_rays, kd_scenes};
+pub use ray_cases::RayCase;
 
 /// How many trials the cases run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -19,6 +19,7 @@ use ch08::SplitMix64;
 use raystep_core::{DVec3, Interval, Ray};
 use raystep_world::{Accelerator, Object};
 
+use crate::trials::{below, count_failures, per_method, tangent};
 use crate::{Budget, Case, Count, Expect};
 
 const GROUP: &str = "refraction and media";
@@ -106,9 +107,7 @@ fn ior(name: &str) -> f64 {
 /// A random surface normal N and a unit tangent U ⟂ N.
 fn frame(rng: &mut SplitMix64) -> (DVec3, DVec3) {
     let n = rng.unit_vector();
-    let (u, v) = n.any_orthonormal_pair();
-    let angle = std::f64::consts::TAU * rng.next_f64();
-    (n, angle.cos() * u + angle.sin() * v)
+    (n, tangent(rng, n))
 }
 
 /// The ray at angle θ to N: D = sin θ·U − cos θ·N, on N's side.
@@ -139,15 +138,24 @@ fn reflectance_right(r: f64, truth: Truth) -> bool {
     }
 }
 
-/// Failures of refract, fresnel and schlick, as counts.
-fn three(failed: [u64; 3], trials: usize) -> Vec<(Count, Expect)> {
-    ["refract", "fresnel", "schlick"]
-        .into_iter()
-        .zip(failed)
-        .map(|(method, f)| {
-            (Count::new(method, f, trials as u64), Expect::Never)
-        })
-        .collect()
+/// The two reflectances at cos θ: the exact equations' and Schlick's.
+fn reflectances(cos_theta: f64, n_theta: f64, n_phi: f64) -> [f64; 2] {
+    [
+        fresnel(cos_theta, n_theta, n_phi),
+        schlick(cos_theta, n_theta, n_phi),
+    ]
+}
+
+/// Runs `trial` `budget.rays` times: each says whether refract, fresnel
+/// and schlick failed; counted, none of the three allowed to fail.
+fn three(
+    budget: &Budget,
+    seed: u64,
+    trial: impl FnMut(&mut SplitMix64) -> [bool; 3],
+) -> Vec<(Count, Expect)> {
+    let failed = count_failures(budget.rays, seed, trial);
+    let methods = ["refract", "fresnel", "schlick"];
+    per_method(methods, failed, budget.rays as u64, [Expect::Never; 3])
 }
 
 /// Rays leaving `material` into air at θc − 1e-9, θc and θc + 1e-9 rad in
@@ -159,9 +167,8 @@ fn critical(
 ) -> Vec<(Count, Expect)> {
     let (n_theta, n_phi) = (ior(material), ior("air"));
     let theta_c = critical_angle(n_theta, n_phi).expect("denser than air");
-    let mut rng = SplitMix64::new(seed);
-    let mut failed = [0u64; 3];
-    for trial in 0..budget.rays {
+    let mut trial = 0;
+    three(budget, seed, |rng| {
         // Step 1: the angle, and what the truth allows there. 1e-9 rad
         // moves sin²φ by 2e-9, ten million times its rounding error.
         let (delta, truth) = match trial % 3 {
@@ -169,7 +176,8 @@ fn critical(
             1 => (0.0, Truth::Either),
             _ => (NEAR_CRITICAL, Truth::Reflects),
         };
-        let (n, u) = frame(&mut rng);
+        trial += 1;
+        let (n, u) = frame(rng);
         let d = at_angle(n, u, theta_c + delta);
         // Step 2: the direction: none past θc, a unit T below it, and at θc
         // either, a T then grazing the surface (|T·N| < 1e-7).
@@ -180,20 +188,11 @@ fn critical(
             (Some(t), Truth::Transmits) => through(t, n, 0.0),
             (Some(t), Truth::Either) => through(t, n, 1e-7) && t.dot(n) > -1e-7,
         };
-        failed[0] += u64::from(!right);
         // Step 3: the reflectances, both formulas.
-        let cos_theta = -d.dot(n);
-        for (i, r) in [
-            fresnel(cos_theta, n_theta, n_phi),
-            schlick(cos_theta, n_theta, n_phi),
-        ]
-        .into_iter()
-        .enumerate()
-        {
-            failed[1 + i] += u64::from(!reflectance_right(r, truth));
-        }
-    }
-    three(failed, budget.rays)
+        let [f, s] = reflectances(-d.dot(n), n_theta, n_phi)
+            .map(|r| !reflectance_right(r, truth));
+        [!right, f, s]
+    })
 }
 
 /// Glass (1.5) into air at its critical angle.
@@ -208,8 +207,7 @@ fn critical_diamond(budget: &Budget) -> Vec<(Count, Expect)> {
 
 /// A random material of the table.
 fn material(rng: &mut SplitMix64) -> f64 {
-    let i = rng.next_u64() % REFRACTIVE_INDICES.len() as u64;
-    REFRACTIVE_INDICES[i as usize].1
+    REFRACTIVE_INDICES[below(rng, REFRACTIVE_INDICES.len())].1
 }
 
 /// Two random materials of the table, the ray's side and the other; with
@@ -232,42 +230,29 @@ fn grazing(rng: &mut SplitMix64, n: DVec3, u: DVec3) -> DVec3 {
 
 /// D = −N between random materials: T = D, R = R₀.
 fn normal_incidence(budget: &Budget) -> Vec<(Count, Expect)> {
-    let mut rng = SplitMix64::new(0x5EED_0603);
-    let mut failed = [0u64; 3];
-    for _ in 0..budget.rays {
+    three(budget, 0x5EED_0603, |rng| {
         // Step 1: straight at the surface, between two random materials.
         let n = rng.unit_vector();
         let d = -n;
-        let (n_theta, n_phi) = two_materials(&mut rng, false);
+        let (n_theta, n_phi) = two_materials(rng, false);
         // Step 2: T goes straight on: T = D.
         let right = refract(d, n, n_theta, n_phi)
             .is_some_and(|t| through(t, n, 0.0) && (t - d).length() <= UNIT);
-        failed[0] += u64::from(!right);
         // Step 3: R is R₀ = ((n_θ − n_φ)/(n_θ + n_φ))², both formulas.
         let r0 = ((n_theta - n_phi) / (n_theta + n_phi)).powi(2);
-        let cos_theta = -d.dot(n);
-        for (i, r) in [
-            fresnel(cos_theta, n_theta, n_phi),
-            schlick(cos_theta, n_theta, n_phi),
-        ]
-        .into_iter()
-        .enumerate()
-        {
-            failed[1 + i] += u64::from((r - r0).abs() > UNIT);
-        }
-    }
-    three(failed, budget.rays)
+        let [f, s] = reflectances(-d.dot(n), n_theta, n_phi)
+            .map(|r| (r - r0).abs() > UNIT);
+        [!right, f, s]
+    })
 }
 
 /// cos θ ≈ 1e-12 between two different materials.
 fn grazing_incidence(budget: &Budget) -> Vec<(Count, Expect)> {
-    let mut rng = SplitMix64::new(0x5EED_0604);
-    let mut failed = [0u64; 3];
-    for _ in 0..budget.rays {
+    three(budget, 0x5EED_0604, |rng| {
         // Step 1: cos θ ≈ 1e-12, between two different media.
-        let (n, u) = frame(&mut rng);
-        let d = grazing(&mut rng, n, u);
-        let (n_theta, n_phi) = two_materials(&mut rng, true);
+        let (n, u) = frame(rng);
+        let d = grazing(rng, n, u);
+        let (n_theta, n_phi) = two_materials(rng, true);
         // Step 2: into a denser medium a unit T through the surface that
         // obeys Snell's law; out of a denser one, TIR.
         let truth = if n_theta > n_phi {
@@ -284,52 +269,32 @@ fn grazing_incidence(budget: &Budget) -> Vec<(Count, Expect)> {
             (None, Truth::Reflects) => true,
             _ => false,
         };
-        failed[0] += u64::from(!right);
         // Step 3: R in [0, 1], 1 at TIR.
-        let cos_theta = -d.dot(n);
-        for (i, r) in [
-            fresnel(cos_theta, n_theta, n_phi),
-            schlick(cos_theta, n_theta, n_phi),
-        ]
-        .into_iter()
-        .enumerate()
-        {
-            failed[1 + i] += u64::from(!reflectance_right(r, truth));
-        }
-    }
-    three(failed, budget.rays)
+        let [f, s] = reflectances(-d.dot(n), n_theta, n_phi)
+            .map(|r| !reflectance_right(r, truth));
+        [!right, f, s]
+    })
 }
 
 /// cos θ ≈ 1e-12 with the same index on both sides: no surface at all.
 fn index_matched(budget: &Budget) -> Vec<(Count, Expect)> {
-    let mut rng = SplitMix64::new(0x5EED_0608);
-    let mut failed = [0u64; 3];
-    for _ in 0..budget.rays {
+    let mut counts = three(budget, 0x5EED_0608, |rng| {
         // Step 1: cos θ ≈ 1e-12, the same medium on both sides (as the
         // stack gives between overlapping objects, or after a mismatch).
-        let (n, u) = frame(&mut rng);
-        let d = grazing(&mut rng, n, u);
-        let index = material(&mut rng);
+        let (n, u) = frame(rng);
+        let d = grazing(rng, n, u);
+        let index = material(rng);
         // Step 2: no surface, no bending: T = D (within chapter 6's 1e-9).
         let right = refract(d, n, index, index).is_some_and(|t| {
             t.is_finite()
                 && (t.length() - 1.0).abs() <= UNIT
                 && (t - d).length() <= 1e-9
         });
-        failed[0] += u64::from(!right);
         // Step 3: no surface, no reflection: R = 0.
-        let cos_theta = -d.dot(n);
-        for (i, r) in [
-            fresnel(cos_theta, index, index),
-            schlick(cos_theta, index, index),
-        ]
-        .into_iter()
-        .enumerate()
-        {
-            failed[1 + i] += u64::from(!(0.0..=UNIT).contains(&r));
-        }
-    }
-    let mut counts = three(failed, budget.rays);
+        let [f, s] = reflectances(-d.dot(n), index, index)
+            .map(|r| !(0.0..=UNIT).contains(&r));
+        [!right, f, s]
+    });
     // chapter 6's `fresnel`: 1 − cos²θ rounds to 1, so sin²φ ≥ 1 and it
     // reports total reflection (a finding of the catalogue, not fixed)
     counts[1].1 = Expect::Shown;
@@ -380,14 +345,12 @@ fn walk(objects: &[Object], iors: &[f64], ray: Ray) -> bool {
 /// Rays through a water sphere and a glass sphere whose surfaces
 /// coincide to within 4 ulps, walked as chapter 6's tracer walks them.
 fn coincident_surfaces(budget: &Budget) -> Vec<(Count, Expect)> {
-    let mut rng = SplitMix64::new(0x5EED_0605);
     let centre = DVec3::new(0.3, -0.2, 0.1);
     let iors = [ior("water"), ior("glass")];
-    let mut failed = 0;
-    for _ in 0..budget.rays {
+    let failed = count_failures(budget.rays, 0x5EED_0605, |rng| {
         // Step 1: a water sphere of radius 1 and a glass sphere whose radius
         // is 1 within 4 ulps (made by another computation, say).
-        let ulps = (rng.next_u64() % 9) as i64 - 4;
+        let ulps = below(rng, 9) as i64 - 4;
         let radius = f64::from_bits((1f64.to_bits() as i64 + ulps) as u64);
         let objects = [1.0, radius].map(|r| Object {
             shape: Arc::new(Sphere::new(centre, r)),
@@ -397,10 +360,9 @@ fn coincident_surfaces(budget: &Budget) -> Vec<(Count, Expect)> {
         let eye = centre + 3.0 * rng.unit_vector();
         let target = centre + 0.9 * rng.next_f64().sqrt() * rng.unit_vector();
         let ray = Ray::new(eye, (target - eye).normalize());
-        failed += u64::from(!walk(&objects, &iors, ray));
-    }
-    let count = Count::new("Media", failed, budget.rays as u64);
-    vec![(count, Expect::Shown)]
+        [!walk(&objects, &iors, ray)]
+    });
+    per_method(["Media"], failed, budget.rays as u64, [Expect::Shown])
 }
 
 /// The lecture's rule without a stack: entering, n_θ is the camera's
@@ -415,18 +377,12 @@ fn swap_rule(ior: f64, entering: bool) -> (f64, f64) {
 
 /// The stack, and the swap rule, over random sequences of crossings.
 fn random_orders(budget: &Budget) -> Vec<(Count, Expect)> {
-    let mut rng = SplitMix64::new(0x5EED_0606);
-    let mut failed = [0u64; 2];
-    for _ in 0..budget.rays {
+    let failed = count_failures(budget.rays, 0x5EED_0606, |rng| {
         // Step 1: 1 to 8 objects (random ids and indices), each entered and
         // left once, in a random order of the 2n crossings.
-        let count = 1 + (rng.next_u64() % MAX_NESTING as u64) as usize;
+        let count = 1 + below(rng, MAX_NESTING);
         let mut outside: Vec<(usize, f64)> = (0..count)
-            .map(|i| {
-                let id = 1000 * i + (rng.next_u64() % 1000) as usize;
-                let k = rng.next_u64() % REFRACTIVE_INDICES.len() as u64;
-                (id, REFRACTIVE_INDICES[k as usize].1)
-            })
+            .map(|i| (1000 * i + below(rng, 1000), material(rng)))
             .collect();
         // `inside` is the truth: the objects around the ray, innermost last.
         let mut inside: Vec<(usize, f64)> = Vec::new();
@@ -445,7 +401,7 @@ fn random_orders(budget: &Budget) -> Vec<(Count, Expect)> {
             } else {
                 (&mut inside, &mut outside)
             };
-            let at = (rng.next_u64() % from.len() as u64) as usize;
+            let at = below(rng, from.len());
             let (object, index) = from.remove(at);
             if enter {
                 to.push((object, index));
@@ -459,23 +415,20 @@ fn random_orders(budget: &Budget) -> Vec<(Count, Expect)> {
         }
         // Step 4: out of everything, the stack is the open again.
         stack_right &= media == Media::new(CAMERA_MEDIUM);
-        failed[0] += u64::from(!stack_right);
-        failed[1] += u64::from(!swap_right);
-    }
-    let trials = budget.rays as u64;
-    vec![
-        (Count::new("Media", failed[0], trials), Expect::Never),
-        (Count::new("swap rule", failed[1], trials), Expect::Shown),
-    ]
+        [!stack_right, !swap_right]
+    });
+    let methods = ["Media", "swap rule"];
+    let expect = [Expect::Never, Expect::Shown];
+    per_method(methods, failed, budget.rays as u64, expect)
 }
 
 /// Schlick against the exact R up to 5° below the critical angle.
 fn schlick_near_critical(budget: &Budget) -> Vec<(Count, Expect)> {
-    let mut rng = SplitMix64::new(0x5EED_0607);
-    let mut failed = 0;
-    for trial in 0..budget.rays {
+    let mut trial = 0;
+    let failed = count_failures(budget.rays, 0x5EED_0607, |rng| {
         // Step 1: out of glass or diamond into air, up to 5° below θc.
         let material = ["glass", "diamond"][trial % 2];
+        trial += 1;
         let (n_theta, n_phi) = (ior(material), ior("air"));
         let theta_c = critical_angle(n_theta, n_phi).expect("denser than air");
         let theta = theta_c - WINDOW.to_radians() * rng.next_f64();
@@ -483,8 +436,7 @@ fn schlick_near_critical(budget: &Budget) -> Vec<(Count, Expect)> {
         let c = theta.cos();
         let error =
             (schlick(c, n_theta, n_phi) - fresnel(c, n_theta, n_phi)).abs();
-        failed += u64::from(error > SCHLICK_TOLERANCE);
-    }
-    let count = Count::new("schlick", failed, budget.rays as u64);
-    vec![(count, Expect::Shown)]
+        [error > SCHLICK_TOLERANCE]
+    });
+    per_method(["schlick"], failed, budget.rays as u64, [Expect::Shown])
 }

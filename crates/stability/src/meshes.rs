@@ -11,17 +11,19 @@
 //! 3 674 for its leak surfaces and its quantized copy), so that brute
 //! force can answer 10⁶ rays per case.
 use ch08::{
-    BoundingSphere, Builder, Bvh, EDGE_REACH, MeshAccelerator, MeshBruteForce,
-    MeshBvh, NodePrecision, Ray32, SplitMix64, TraceCounts, camera_rays,
-    incoherent_rays, leak_surfaces, shared_edge_rays, triangle_boxes,
+    BoundingSphere, Builder, Bvh, MeshAccelerator, MeshBruteForce, MeshBvh,
+    NodePrecision, Ray32, SplitMix64, TraceCounts, triangle_boxes,
 };
 use ch09::{Fill, MeshGrid, Resolution};
 use ch10::{Clip, KdBuilder, KdCosts, MeshKd};
 use ch11::{FastBvh, Kernel, Step};
+use raystep_bench::{camera_rays, incoherent_rays};
 use raystep_core::{Aabb, DVec3, Interval, Ray};
 
 use crate::scenes::{bunny, icosphere};
-use crate::{Budget, Case, Count, Expect};
+use crate::{
+    Budget, Case, Count, EDGE_REACH, Expect, leak_surfaces, shared_edge_rays,
+};
 
 /// The group's name in the table.
 const GROUP: &str = "accelerators (meshes)";
@@ -676,8 +678,8 @@ fn tiny(budget: &Budget) -> Vec<Scene> {
 fn grid_lines(budget: &Budget) -> Vec<Scene> {
     let triangles = icosphere(3);
     let grid = MeshGrid::new(&triangles, Resolution::Rule, Fill::Exact);
-    let kinds = ch09::adversarial_rays(&grid.grid.lattice, 1, 37).len();
-    let rays = ch09::adversarial_rays(
+    let kinds = crate::adversarial_rays(&grid.grid.lattice, 1, 37).len();
+    let rays = crate::adversarial_rays(
         &grid.grid.lattice,
         budget.rays.div_ceil(kinds),
         37,
@@ -699,8 +701,8 @@ fn kd_planes(budget: &Budget) -> Vec<Scene> {
         KdCosts::CHOSEN,
         Clip::Triangles,
     );
-    let kinds = ch10::kd_rays(&kd.tree, 1, 39).len();
-    let rays = ch10::kd_rays(&kd.tree, budget.rays.div_ceil(kinds), 39)
+    let kinds = crate::kd_rays(&kd.tree, 1, 39).len();
+    let rays = crate::kd_rays(&kd.tree, budget.rays.div_ceil(kinds), 39)
         .into_iter()
         .flat_map(|case| case.rays)
         .map(|ray| Ray32::rounded(&ray))

@@ -201,7 +201,7 @@ impl Mutator {
 
     /// A number in `0..n` (`n ≥ 1`).
     pub fn below(&mut self, n: usize) -> usize {
-        (self.0.next_u64() % n as u64) as usize
+        crate::trials::below(&mut self.0, n)
     }
 
     /// One of `items`, uniformly.

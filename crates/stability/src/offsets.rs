@@ -23,6 +23,7 @@ use ch04::{Offset, shadow_ray};
 use ch08::{SplitMix64, Triangle, TriangleTest};
 use raystep_core::{DVec3, Interval, Ray, Shape};
 
+use crate::trials::tangent;
 use crate::{Budget, Case, Count, Expect};
 
 const GROUP: &str = "self-intersection";
@@ -120,13 +121,6 @@ struct Target {
     surface: Box<dyn Shape>,
     blocker: Box<dyn Shape>,
     aim: Box<dyn Fn(&mut SplitMix64) -> Ray>,
-}
-
-/// A random unit vector perpendicular to the unit `normal`.
-fn tangent(rng: &mut SplitMix64, normal: DVec3) -> DVec3 {
-    let (u, v) = normal.any_orthonormal_pair();
-    let angle = std::f64::consts::TAU * rng.next_f64();
-    angle.cos() * u + angle.sin() * v
 }
 
 /// A sphere, a tilted plane and a triangle, each about `scale` in size,

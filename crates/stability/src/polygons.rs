@@ -5,61 +5,55 @@
 use ch02::{DVec2, inside_convex, inside_crossing};
 use ch08::SplitMix64;
 
-use crate::triangles::{below, uniform};
+use crate::trials::{below, count_failures, per_method, uniform};
 use crate::{Budget, Case, Count, Expect};
 
 const POLYGONS: &str = "polygon tests";
 
 /// This group's cases.
 pub fn cases() -> Vec<Case> {
-    let case = |group, name, what, run| Case {
-        group,
-        name,
-        what,
-        run,
-    };
     vec![
-        case(
-            POLYGONS,
-            "point on a shared edge",
-            "a point on the edge two convex polygons share has exactly \
-             one owner (the tie rule)",
-            on_a_shared_edge,
-        ),
-        case(
-            POLYGONS,
-            "point at a shared vertex",
-            "a fan's shared vertex has exactly one owner (the tie rule)",
-            at_a_shared_vertex,
-        ),
-        case(
-            POLYGONS,
-            "point on a horizontal edge",
-            "points on a 2 × 2 grid's shared edges and centre: one owner \
-             each (half-open in y)",
-            on_a_horizontal_edge,
-        ),
-        case(
-            POLYGONS,
-            "point level with a vertex",
-            "the crossing ray passes exactly through a vertex: counted \
-             once, so inside stays right",
-            level_with_a_vertex,
-        ),
-        case(
-            POLYGONS,
-            "point 1e-9 from an edge",
-            "a point 1e-9 inside or outside an edge is on its side for \
-             both tests",
-            near_an_edge,
-        ),
-        case(
-            POLYGONS,
-            "almost straight shared chain",
-            "a shared chain bent by rounding: the edge test leaks there, \
-             the crossing number never",
-            almost_straight_chain,
-        ),
+        Case {
+            group: POLYGONS,
+            name: "point on a shared edge",
+            what: "a point on the edge two convex polygons share has exactly \
+                   one owner (the tie rule)",
+            run: on_a_shared_edge,
+        },
+        Case {
+            group: POLYGONS,
+            name: "point at a shared vertex",
+            what: "a fan's shared vertex has exactly one owner (the tie rule)",
+            run: at_a_shared_vertex,
+        },
+        Case {
+            group: POLYGONS,
+            name: "point on a horizontal edge",
+            what: "points on a 2 × 2 grid's shared edges and centre: one \
+                   owner each (half-open in y)",
+            run: on_a_horizontal_edge,
+        },
+        Case {
+            group: POLYGONS,
+            name: "point level with a vertex",
+            what: "the crossing ray passes exactly through a vertex: counted \
+                   once, so inside stays right",
+            run: level_with_a_vertex,
+        },
+        Case {
+            group: POLYGONS,
+            name: "point 1e-9 from an edge",
+            what: "a point 1e-9 inside or outside an edge is on its side for \
+                   both tests",
+            run: near_an_edge,
+        },
+        Case {
+            group: POLYGONS,
+            name: "almost straight shared chain",
+            what: "a shared chain bent by rounding: the edge test leaks \
+                   there, the crossing number never",
+            run: almost_straight_chain,
+        },
     ]
 }
 
@@ -74,34 +68,12 @@ fn per_inside_test(
     trials: u64,
     expect: [Expect; 2],
 ) -> Vec<(Count, Expect)> {
-    [EDGE_TEST, CROSSING]
-        .into_iter()
-        .zip(failures)
-        .zip(expect)
-        .map(|((name, f), e)| (Count::new(name, f, trials), e))
-        .collect()
+    per_method([EDGE_TEST, CROSSING], failures, trials, expect)
 }
 
 /// Both inside tests, in the order of [`per_inside_test`].
 const INSIDE_TESTS: [fn(&[DVec2], DVec2) -> bool; 2] =
     [inside_convex, inside_crossing];
-
-/// Runs `trial` `trials` times; each trial says, per inside test,
-/// whether it failed.
-fn count_inside_failures(
-    trials: usize,
-    seed: u64,
-    mut trial: impl FnMut(&mut SplitMix64) -> [bool; 2],
-) -> [u64; 2] {
-    let mut rng = SplitMix64::new(seed);
-    let mut failures = [0; 2];
-    for _ in 0..trials {
-        for (f, failed) in failures.iter_mut().zip(trial(&mut rng)) {
-            *f += u64::from(failed);
-        }
-    }
-    failures
-}
 
 /// How many of `polygons` `inside` says hold `p`.
 fn owners(
@@ -162,7 +134,7 @@ fn convex_polygon(rng: &mut SplitMix64, lattice: bool) -> Vec<DVec2> {
 /// 1/64 lattice and the fraction is k/64 (half the trials), else as
 /// rounded. Each point must have exactly one owner.
 fn on_a_shared_edge(budget: &Budget) -> Vec<(Count, Expect)> {
-    let failures = count_inside_failures(budget.rays, 0x17_0011, |rng| {
+    let failures = count_failures(budget.rays, 0x17_0011, |rng| {
         let exact = rng.next_f64() < 0.5;
         let outline = convex_polygon(rng, exact);
         let n = outline.len();
@@ -190,7 +162,7 @@ fn on_a_shared_edge(budget: &Budget) -> Vec<(Count, Expect)> {
 /// A fan of 3…8 triangles around a random vertex c (each gap between
 /// rim corners under π): c must have exactly one owner.
 fn at_a_shared_vertex(budget: &Budget) -> Vec<(Count, Expect)> {
-    let failures = count_inside_failures(budget.rays, 0x17_0012, |rng| {
+    let failures = count_failures(budget.rays, 0x17_0012, |rng| {
         let c =
             DVec2::new(uniform(rng, -10.0, 10.0), uniform(rng, -10.0, 10.0));
         let n = 3 + below(rng, 6);
@@ -224,7 +196,7 @@ fn at_a_shared_vertex(budget: &Budget) -> Vec<(Count, Expect)> {
 /// shared horizontal edge, its shared vertical edge, and its centre.
 /// Each must have exactly one owner.
 fn on_a_horizontal_edge(budget: &Budget) -> Vec<(Count, Expect)> {
-    let failures = count_inside_failures(budget.rays, 0x17_0013, |rng| {
+    let failures = count_failures(budget.rays, 0x17_0013, |rng| {
         let x0 = uniform(rng, -10.0, 10.0);
         let y0 = uniform(rng, -10.0, 10.0);
         let x = [x0, x0 + uniform(rng, 0.1, 3.0)];
@@ -255,7 +227,7 @@ fn on_a_horizontal_edge(budget: &Budget) -> Vec<(Count, Expect)> {
 /// or outside by at least 1e-6 (the boundary's x at that height found
 /// from the edges): the crossing ray passes through the corner.
 fn level_with_a_vertex(budget: &Budget) -> Vec<(Count, Expect)> {
-    let failures = count_inside_failures(budget.rays, 0x17_0014, |rng| {
+    let failures = count_failures(budget.rays, 0x17_0014, |rng| {
         let lattice = rng.next_f64() < 0.5;
         let outline = convex_polygon(rng, lattice);
         let n = outline.len();
@@ -297,7 +269,7 @@ fn level_with_a_vertex(budget: &Budget) -> Vec<(Count, Expect)> {
 /// A point 5%…95% along an edge of a convex polygon, moved 1e-9 across
 /// it, inward or outward: the verdict must follow.
 fn near_an_edge(budget: &Budget) -> Vec<(Count, Expect)> {
-    let failures = count_inside_failures(budget.rays, 0x17_0015, |rng| {
+    let failures = count_failures(budget.rays, 0x17_0015, |rng| {
         let outline = convex_polygon(rng, false);
         let n = outline.len();
         let i = below(rng, n);
@@ -318,7 +290,7 @@ fn near_an_edge(budget: &Budget) -> Vec<(Count, Expect)> {
 /// gets the method counted. Points along the chain and at m must have
 /// exactly one owner.
 fn almost_straight_chain(budget: &Budget) -> Vec<(Count, Expect)> {
-    let failures = count_inside_failures(budget.rays, 0x17_0016, |rng| {
+    let failures = count_failures(budget.rays, 0x17_0016, |rng| {
         let (x0, x1) = (uniform(rng, 0.1, 0.8), uniform(rng, 0.2, 0.9));
         let (a, b) = (DVec2::new(x0, 0.0), DVec2::new(x1, 1.0));
         let m = a + (b - a) * ((1 + below(rng, 6)) as f64 / 7.0);

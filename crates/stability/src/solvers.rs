@@ -16,67 +16,70 @@ use ch08::{
     quadratic_roots,
 };
 
+use crate::trials::{count_failures, cube_point, decades, per_method, uniform};
 use crate::{Budget, Case, Count, Expect};
 
 const GROUP: &str = "sphere and torus";
 
 /// This group's cases.
 pub fn cases() -> Vec<Case> {
-    let case = |name, what, run| Case {
-        group: GROUP,
-        name,
-        what,
-        run,
-    };
     vec![
-        case(
-            "grazing a sphere",
-            "rays r·(1 ± 1e-12…1e-3) from the centre: Δ = b² − ac cancels; \
-             chapter 3's form survives",
-            grazing_a_sphere,
-        ),
-        case(
-            "sphere from afar",
-            "origins 1e6 radii away: b² − ac cancels to noise; chapter 3's \
-             Δ from l survives",
-            sphere_from_afar,
-        ),
-        case(
-            "origin on the sphere",
-            "a ray leaving the surface, t ≥ 1e-6·r: no re-hit at t ≈ 0, \
-             the far hit right; all survive",
-            origin_on_the_sphere,
-        ),
-        case(
-            "torus: grazing the outer equator",
-            "1e-9…1e-3·r inside or outside the outer equator: a double \
-             root; bracketed survives",
-            grazing_the_equator,
-        ),
-        case(
-            "torus: grazing the hole",
-            "1e-9…1e-3·r either side of the hole's rim: a close pair or \
-             none; bracketed survives",
-            grazing_the_hole,
-        ),
-        case(
-            "torus: along the axis",
-            "rays along the axis through the hole, on it or off it: no \
-             root; both survive",
-            along_the_axis,
-        ),
-        case(
-            "torus: tangent to the top circle",
-            "horizontal rays 1e-9…1e-3·r below or above the top circle; \
-             bracketed survives",
-            tangent_to_the_top,
-        ),
-        case(
-            "torus from afar",
-            "origins 1e3…1e6 away: the quartic's coefficients cancel; \
-             bracketed (origin moved) survives",
-            torus_from_afar,
-        ),
+        Case {
+            group: GROUP,
+            name: "grazing a sphere",
+            what: "rays r·(1 ± 1e-12…1e-3) from the centre: Δ = b² − ac \
+                   cancels; chapter 3's form survives",
+            run: grazing_a_sphere,
+        },
+        Case {
+            group: GROUP,
+            name: "sphere from afar",
+            what: "origins 1e6 radii away: b² − ac cancels to noise; chapter \
+                   3's Δ from l survives",
+            run: sphere_from_afar,
+        },
+        Case {
+            group: GROUP,
+            name: "origin on the sphere",
+            what: "a ray leaving the surface, t ≥ 1e-6·r: no re-hit at t ≈ 0, \
+                   the far hit right; all survive",
+            run: origin_on_the_sphere,
+        },
+        Case {
+            group: GROUP,
+            name: "torus: grazing the outer equator",
+            what: "1e-9…1e-3·r inside or outside the outer equator: a double \
+                   root; bracketed survives",
+            run: grazing_the_equator,
+        },
+        Case {
+            group: GROUP,
+            name: "torus: grazing the hole",
+            what: "1e-9…1e-3·r either side of the hole's rim: a close pair or \
+                   none; bracketed survives",
+            run: grazing_the_hole,
+        },
+        Case {
+            group: GROUP,
+            name: "torus: along the axis",
+            what: "rays along the axis through the hole, on it or off it: no \
+                   root; both survive",
+            run: along_the_axis,
+        },
+        Case {
+            group: GROUP,
+            name: "torus: tangent to the top circle",
+            what: "horizontal rays 1e-9…1e-3·r below or above the top circle; \
+                   bracketed survives",
+            run: tangent_to_the_top,
+        },
+        Case {
+            group: GROUP,
+            name: "torus from afar",
+            what: "origins 1e3…1e6 away: the quartic's coefficients cancel; \
+                   bracketed (origin moved) survives",
+            run: torus_from_afar,
+        },
     ]
 }
 
@@ -260,46 +263,6 @@ impl Round {
 }
 
 // ---------------------------------------------------------------------
-// Random numbers.
-// ---------------------------------------------------------------------
-
-/// A number uniformly in `[lo, hi)`.
-fn uniform(rng: &mut SplitMix64, lo: f64, hi: f64) -> f64 {
-    lo + (hi - lo) * rng.next_f64()
-}
-
-/// 10ˣ with x uniform in `[lo, hi)`: spread evenly over decades.
-fn decades(rng: &mut SplitMix64, lo: f64, hi: f64) -> f64 {
-    10f64.powf(uniform(rng, lo, hi))
-}
-
-/// A point uniformly in the cube [−1, 1]³.
-fn cube_point(rng: &mut SplitMix64) -> DVec3 {
-    DVec3::new(
-        uniform(rng, -1.0, 1.0),
-        uniform(rng, -1.0, 1.0),
-        uniform(rng, -1.0, 1.0),
-    )
-}
-
-/// Runs `trial` `trials` times with a generator seeded `seed`; each
-/// trial says, per method, whether it failed.
-fn count_failures<const N: usize>(
-    trials: usize,
-    seed: u64,
-    mut trial: impl FnMut(&mut SplitMix64) -> [bool; N],
-) -> [u64; N] {
-    let mut rng = SplitMix64::new(seed);
-    let mut failures = [0; N];
-    for _ in 0..trials {
-        for (f, failed) in failures.iter_mut().zip(trial(&mut rng)) {
-            *f += u64::from(failed);
-        }
-    }
-    failures
-}
-
-// ---------------------------------------------------------------------
 // Spheres: four ways to solve the quadratic.
 // ---------------------------------------------------------------------
 
@@ -391,12 +354,7 @@ fn per_sphere_method(
     trials: usize,
 ) -> Vec<(Count, Expect)> {
     let expect = [Expect::Shown, Expect::Shown, Expect::Never, Expect::Never];
-    SPHERE_METHODS
-        .iter()
-        .zip(failures)
-        .zip(expect)
-        .map(|((name, f), e)| (Count::new(*name, f, trials as u64), e))
-        .collect()
+    per_method(SPHERE_METHODS, failures, trials as u64, expect)
 }
 
 /// Rays passing the centre at r·(1 − δ) (two roots √(2δ)·r either side
@@ -554,13 +512,13 @@ fn torus_case(
 /// One count per solver: the closed form shown, the bracketed method
 /// must survive.
 fn per_torus_method(failures: [u64; 2], trials: usize) -> Vec<(Count, Expect)> {
-    let expect = [Expect::Shown, Expect::Never];
-    TORUS_METHODS
-        .iter()
-        .zip(failures)
-        .zip(expect)
-        .map(|(((_, name), f), e)| (Count::new(*name, f, trials as u64), e))
-        .collect()
+    let names = TORUS_METHODS.map(|(_, name)| name);
+    per_method(
+        names,
+        failures,
+        trials as u64,
+        [Expect::Shown, Expect::Never],
+    )
 }
 
 /// δ = 1e-9…1e-3, either side, and a lead of 4…100·R.

@@ -8,24 +8,15 @@ use crate::{Expect, Row};
 /// The table for a terminal: one block per case, one line per method.
 pub fn text(rows: &[Row]) -> String {
     let mut out = String::new();
-    let mut last: Option<(&str, &str)> = None;
-    for row in rows {
-        if last.map(|(g, _)| g) != Some(&row.group) {
+    for (new_group, new_case, row) in with_starts(rows) {
+        if new_group {
             writeln!(out, "\n== {} ==", row.group).unwrap();
         }
-        if last.map(|(_, c)| c) != Some(&row.case) {
+        if new_case {
             writeln!(out, "{}: {}", row.case, row.what).unwrap();
         }
-        last = Some((&row.group, &row.case));
-        writeln!(
-            out,
-            "    {:<36} {:>9} / {}{}",
-            row.count.method,
-            row.count.failures,
-            row.count.trials,
-            mark(row)
-        )
-        .unwrap();
+        let tally = tally(row, 9);
+        writeln!(out, "    {:<36} {tally}", row.count.method).unwrap();
     }
     out
 }
@@ -34,30 +25,39 @@ pub fn text(rows: &[Row]) -> String {
 /// (case, method), the case named on its first row.
 pub fn markdown(rows: &[Row]) -> String {
     let mut out = String::new();
-    let mut last: Option<(&str, &str)> = None;
-    for row in rows {
-        if last.map(|(g, _)| g) != Some(&row.group) {
+    for (new_group, new_case, row) in with_starts(rows) {
+        if new_group {
             writeln!(out, "\n### {}\n", row.group).unwrap();
             writeln!(out, "| case | method | failures / trials |").unwrap();
             writeln!(out, "|---|---|---:|").unwrap();
         }
-        let case = if last.map(|(_, c)| c) != Some(&row.case) {
+        let case = if new_case {
             format!("**{}**: {}", row.case, row.what)
         } else {
             String::new()
         };
-        last = Some((&row.group, &row.case));
-        writeln!(
-            out,
-            "| {case} | {} | {} / {}{} |",
-            row.count.method,
-            row.count.failures,
-            row.count.trials,
-            mark(row)
-        )
-        .unwrap();
+        let tally = tally(row, 0);
+        writeln!(out, "| {case} | {} | {tally} |", row.count.method).unwrap();
     }
     out
+}
+
+/// Each row with whether it starts a group and whether it starts a case
+/// (the row before it had another).
+fn with_starts(rows: &[Row]) -> impl Iterator<Item = (bool, bool, &Row)> {
+    let mut last: Option<(&str, &str)> = None;
+    rows.iter().map(move |row| {
+        let new_group = last.map(|(g, _)| g) != Some(&row.group);
+        let new_case = last.map(|(_, c)| c) != Some(&row.case);
+        last = Some((&row.group, &row.case));
+        (new_group, new_case, row)
+    })
+}
+
+/// `failures / trials`, the failures right-aligned in `width`, marked.
+fn tally(row: &Row, width: usize) -> String {
+    let count = &row.count;
+    format!("{:>width$} / {}{}", count.failures, count.trials, mark(row))
 }
 
 /// ` (!)` after a failure the method is built to survive: a bug.

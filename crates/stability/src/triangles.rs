@@ -14,188 +14,161 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use ch02::Polygon;
 use ch08::{
-    DVec3, EDGE_REACH, Interval, Ray, SplitMix64, Triangle, TriangleTest,
-    leak_surfaces, moller_trumbore, watertight,
+    DVec3, Interval, Ray, SplitMix64, Triangle, TriangleTest, moller_trumbore,
+    watertight,
 };
 use raystep_core::glam::DQuat;
-use raystep_scene::Mesh;
 
-use crate::{Budget, Case, Count, Expect};
+use crate::scenes;
+use crate::trials::{
+    below, count_failures, cube_point, decades, per_method, uniform,
+};
+use crate::{Budget, Case, Count, EDGE_REACH, Expect, leak_surfaces};
 
 const TRIANGLES: &str = "triangle tests";
 
 /// This group's cases.
 pub fn cases() -> Vec<Case> {
-    let case = |group, name, what, run| Case {
-        group,
-        name,
-        what,
-        run,
-    };
     vec![
-        case(
-            TRIANGLES,
-            "ray parallel to the plane",
-            "a ray 1e-12…1 off the plane, parallel to it, must miss; \
-             all three survive",
-            parallel_to_the_plane,
-        ),
-        case(
-            TRIANGLES,
-            "ray in the plane",
-            "a ray in the plane may hit only where it crosses the \
-             triangle; only plane + inside is built for it",
-            in_the_plane,
-        ),
-        case(
-            TRIANGLES,
-            "shared edge: leaks",
-            "a ray at a shared edge falls through both triangles; the \
-             watertight test never leaks",
-            shared_edge_leaks,
-        ),
-        case(
-            TRIANGLES,
-            "shared edge: double hits",
-            "a ray at a shared edge hits both triangles; the watertight \
-             test never does",
-            shared_edge_doubles,
-        ),
-        case(
-            TRIANGLES,
-            "shared vertex: leaks",
-            "a ray at a fan's shared vertex falls through all of it; the \
-             watertight test never leaks",
-            shared_vertex_leaks,
-        ),
-        case(
-            TRIANGLES,
-            "shared vertex: double hits",
-            "a ray at a fan's shared vertex hits two of it; the \
-             watertight test never does",
-            shared_vertex_doubles,
-        ),
-        case(
-            TRIANGLES,
-            "T-junction",
-            "a vertex on a neighbour's edge: no shared edge, so even the \
-             watertight test may leak",
-            t_junction,
-        ),
-        case(
-            TRIANGLES,
-            "quantized mesh",
-            "corners, targets and directions on a 1/8 lattice: exact \
-             ties; watertight: 0 leaks or doubles",
-            quantized_mesh,
-        ),
-        case(
-            TRIANGLES,
-            "axis-parallel rays",
-            "rays along ±x, ±y, ±z at a quantized mesh's edges tie \
-             exactly; watertight: 0 leaks or doubles",
-            axis_parallel,
-        ),
-        case(
-            TRIANGLES,
-            "−0.0 in the direction",
-            "the axis-parallel rays with their zero components −0.0; \
-             watertight: 0 leaks or doubles",
-            negative_zero,
-        ),
-        case(
-            TRIANGLES,
-            "coplanar neighbours",
-            "a flat tilted grid: each triangle's own plane differs; \
-             watertight: 0 leaks or doubles",
-            coplanar_neighbours,
-        ),
-        case(
-            TRIANGLES,
-            "needle triangles",
-            "a needle 1e-9 wide, aimed inside (hit at t = 1) or beside \
-             it (miss); watertight survives",
-            needles,
-        ),
-        case(
-            TRIANGLES,
-            "needle pair",
-            "two needles 1e-9 wide sharing their long edge: leaks or \
-             double hits; watertight: 0",
-            needle_pair,
-        ),
-        case(
-            TRIANGLES,
-            "zero-area triangle",
-            "collinear corners, called directly (meshes drop them): any \
-             hit is wrong; plane + inside refuses",
-            zero_area,
-        ),
-        case(
-            TRIANGLES,
-            "duplicated triangle",
-            "a copy, corners rotated or reversed, must agree near edges \
-             (hit, t to 1e-12); watertight does",
-            duplicated,
-        ),
-        case(
-            TRIANGLES,
-            "huge coordinates",
-            "a closed mesh at 1e7: leaks or double hits at shared \
-             edges and vertices; watertight: 0",
-            huge_coordinates,
-        ),
-        case(
-            TRIANGLES,
-            "denormal triangle",
-            "a triangle 1e-310 across, aimed inside: products \
-             underflow, and every test misses",
-            denormal,
-        ),
-        case(
-            TRIANGLES,
-            "NaN in the ray",
-            "a NaN in the origin or direction: any hit or panic is \
-             wrong; all three survive",
-            nan_in_the_ray,
-        ),
-        case(
-            TRIANGLES,
-            "∞ in the ray",
-            "±∞ in the origin or direction: any hit or panic is wrong; \
-             watertight hits at t = 0",
-            infinity_in_the_ray,
-        ),
+        Case {
+            group: TRIANGLES,
+            name: "ray parallel to the plane",
+            what: "a ray 1e-12…1 off the plane, parallel to it, must miss; \
+                   all three survive",
+            run: parallel_to_the_plane,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "ray in the plane",
+            what: "a ray in the plane may hit only where it crosses the \
+                   triangle; only plane + inside is built for it",
+            run: in_the_plane,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "shared edge: leaks",
+            what: "a ray at a shared edge falls through both triangles; the \
+                   watertight test never leaks",
+            run: shared_edge_leaks,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "shared edge: double hits",
+            what: "a ray at a shared edge hits both triangles; the watertight \
+                   test never does",
+            run: shared_edge_doubles,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "shared vertex: leaks",
+            what: "a ray at a fan's shared vertex falls through all of it; \
+                   the watertight test never leaks",
+            run: shared_vertex_leaks,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "shared vertex: double hits",
+            what: "a ray at a fan's shared vertex hits two of it; the \
+                   watertight test never does",
+            run: shared_vertex_doubles,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "T-junction",
+            what: "a vertex on a neighbour's edge: no shared edge, so even \
+                   the watertight test may leak",
+            run: t_junction,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "quantized mesh",
+            what: "corners, targets and directions on a 1/8 lattice: exact \
+                   ties; watertight: 0 leaks or doubles",
+            run: quantized_mesh,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "axis-parallel rays",
+            what: "rays along ±x, ±y, ±z at a quantized mesh's edges tie \
+                   exactly; watertight: 0 leaks or doubles",
+            run: axis_parallel,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "−0.0 in the direction",
+            what: "the axis-parallel rays with their zero components −0.0; \
+                   watertight: 0 leaks or doubles",
+            run: negative_zero,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "coplanar neighbours",
+            what: "a flat tilted grid: each triangle's own plane differs; \
+                   watertight: 0 leaks or doubles",
+            run: coplanar_neighbours,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "needle triangles",
+            what: "a needle 1e-9 wide, aimed inside (hit at t = 1) or beside \
+                   it (miss); watertight survives",
+            run: needles,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "needle pair",
+            what: "two needles 1e-9 wide sharing their long edge: leaks or \
+                   double hits; watertight: 0",
+            run: needle_pair,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "zero-area triangle",
+            what: "collinear corners, called directly (meshes drop them): any \
+                   hit is wrong; plane + inside refuses",
+            run: zero_area,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "duplicated triangle",
+            what: "a copy, corners rotated or reversed, must agree near edges \
+                   (hit, t to 1e-12); watertight does",
+            run: duplicated,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "huge coordinates",
+            what: "a closed mesh at 1e7: leaks or double hits at shared edges \
+                   and vertices; watertight: 0",
+            run: huge_coordinates,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "denormal triangle",
+            what: "a triangle 1e-310 across, aimed inside: products \
+                   underflow, and every test misses",
+            run: denormal,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "NaN in the ray",
+            what: "a NaN in the origin or direction: any hit or panic is \
+                   wrong; all three survive",
+            run: nan_in_the_ray,
+        },
+        Case {
+            group: TRIANGLES,
+            name: "∞ in the ray",
+            what: "±∞ in the origin or direction: any hit or panic is wrong; \
+                   watertight hits at t = 0",
+            run: infinity_in_the_ray,
+        },
     ]
 }
 
 // ---------------------------------------------------------------------
 // Random numbers and shapes.
 // ---------------------------------------------------------------------
-
-/// A number uniformly in `[lo, hi)`.
-pub(crate) fn uniform(rng: &mut SplitMix64, lo: f64, hi: f64) -> f64 {
-    lo + (hi - lo) * rng.next_f64()
-}
-
-/// 10ˣ with x uniform in `[lo, hi)`: a size spread evenly over decades.
-fn decades(rng: &mut SplitMix64, lo: f64, hi: f64) -> f64 {
-    10f64.powf(uniform(rng, lo, hi))
-}
-
-/// An index uniformly in `0..n`.
-pub(crate) fn below(rng: &mut SplitMix64, n: usize) -> usize {
-    (rng.next_u64() % n as u64) as usize
-}
-
-/// A point uniformly in the cube [−1, 1]³.
-fn cube_point(rng: &mut SplitMix64) -> DVec3 {
-    DVec3::new(
-        uniform(rng, -1.0, 1.0),
-        uniform(rng, -1.0, 1.0),
-        uniform(rng, -1.0, 1.0),
-    )
-}
 
 /// A triangle with corners in [−1, 1]³ and no thin angle (the sine of
 /// each at least 0.2).
@@ -269,18 +242,39 @@ fn hit_once(
     }
 }
 
+/// Per test: does `ray` hit the corners `v` anywhere on its line?
+fn hits_anywhere(v: [DVec3; 3], ray: &Ray) -> [bool; 3] {
+    TriangleTest::ALL
+        .map(|test| hit_once(test, v, ray, Interval::UNIVERSE).is_some())
+}
+
+/// Per test: does `ray` hit the triangles of `mesh` (within
+/// [`EDGE_REACH`]) other than exactly once, a leak or a double hit?
+fn not_hit_once(mesh: &[[DVec3; 3]], ray: &Ray) -> [bool; 3] {
+    TriangleTest::ALL.map(|test| {
+        let hits = mesh
+            .iter()
+            .filter(|v| hit_once(test, **v, ray, EDGE_REACH).is_some())
+            .count();
+        hits != 1
+    })
+}
+
+/// The ray from `distance` back along `d` to `target`: it reaches the
+/// target at t = 1.
+fn ray_to(target: DVec3, d: DVec3, distance: f64) -> Ray {
+    let from = target - distance * d;
+    Ray::new(from, target - from)
+}
+
 /// One count per triangle test, in the lecture's order.
 fn per_test(
     failures: [u64; 3],
     trials: u64,
     expect: [Expect; 3],
 ) -> Vec<(Count, Expect)> {
-    TriangleTest::ALL
-        .iter()
-        .zip(failures)
-        .zip(expect)
-        .map(|((test, f), e)| (Count::new(test.name(), f, trials), e))
-        .collect()
+    let names = TriangleTest::ALL.map(TriangleTest::name);
+    per_method(names, failures, trials, expect)
 }
 
 /// Every test is built for the case.
@@ -290,23 +284,6 @@ const WATERTIGHT_NEVER: [Expect; 3] =
     [Expect::Shown, Expect::Shown, Expect::Never];
 /// No test is built for the case.
 const ALL_SHOWN: [Expect; 3] = [Expect::Shown; 3];
-
-/// Runs `trial` `trials` times with a generator seeded `seed`; each
-/// trial says, per test, whether it failed.
-fn count_failures(
-    trials: usize,
-    seed: u64,
-    mut trial: impl FnMut(&mut SplitMix64) -> [bool; 3],
-) -> [u64; 3] {
-    let mut rng = SplitMix64::new(seed);
-    let mut failures = [0; 3];
-    for _ in 0..trials {
-        for (f, failed) in failures.iter_mut().zip(trial(&mut rng)) {
-            *f += u64::from(failed);
-        }
-    }
-    failures
-}
 
 // ---------------------------------------------------------------------
 // Parallel and in-plane rays.
@@ -344,8 +321,7 @@ fn parallel_to_the_plane(budget: &Budget) -> Vec<(Count, Expect)> {
             2.0 * at(&v, 0.3, 0.3) - over
         };
         let ray = Ray::new(over - 2.0 * d, d);
-        TriangleTest::ALL
-            .map(|test| hit_once(test, v, &ray, Interval::UNIVERSE).is_some())
+        hits_anywhere(v, &ray)
     });
     per_test(failures, budget.rays as u64, ALL_NEVER)
 }
@@ -557,8 +533,7 @@ fn aim_anywhere(rng: &mut SplitMix64, spot: &Spot, reach: f64) -> Option<Ray> {
         _ => unreachable!("a spot is an edge or a vertex"),
     };
     let d = facing(rng, &spot.normals);
-    let from = target - reach * (1.0 + rng.next_f64()) * d;
-    Some(Ray::new(from, target - from))
+    Some(ray_to(target, d, reach * (1.0 + rng.next_f64())))
 }
 
 /// The spot's vertex, or a point k/8 along its edge: exact on a 1/8
@@ -639,6 +614,23 @@ impl Tally {
     fn either(&self) -> [u64; 3] {
         [0, 1, 2].map(|i| self.leaks[i] + self.doubles[i])
     }
+
+    /// `failures` (its leaks, double hits or either), one count per
+    /// test out of its trials: only the watertight test is built to
+    /// have none.
+    fn counted(&self, failures: [u64; 3]) -> Vec<(Count, Expect)> {
+        per_test(failures, self.trials, WATERTIGHT_NEVER)
+    }
+
+    /// Its leaks, [`counted`](Tally::counted).
+    fn counted_leaks(&self) -> Vec<(Count, Expect)> {
+        self.counted(self.leaks)
+    }
+
+    /// Its double hits, [`counted`](Tally::counted).
+    fn counted_doubles(&self) -> Vec<(Count, Expect)> {
+        self.counted(self.doubles)
+    }
 }
 
 /// `trials` rays made by `aim`, each at a spot of the next surface in
@@ -691,9 +683,9 @@ fn awkward_rotation(axis: DVec3, angle: f64) -> DQuat {
 /// An icosphere (320 triangles) rotated, scaled by `scale` and moved to
 /// `centre`.
 fn icosphere(rotation: DQuat, scale: f64, centre: DVec3) -> Vec<[DVec3; 3]> {
-    let mesh = Mesh::icosphere(2);
-    (0..mesh.triangles.len())
-        .map(|k| mesh.triangle(k).map(|p| centre + scale * (rotation * p)))
+    scenes::icosphere(2)
+        .into_iter()
+        .map(|v| v.map(|p| centre + scale * (rotation * p)))
         .collect()
 }
 
@@ -711,53 +703,34 @@ fn leak_test_surfaces() -> Vec<Surface> {
         .collect()
 }
 
-fn shared_edge_tally(budget: &Budget) -> Tally {
+/// Rays from random directions at the `spots` (shared edges or inner
+/// vertices) of chapter 8's leak surfaces, counted.
+fn leak_surfaces_tally(budget: &Budget, spots: Spots, seed: u64) -> Tally {
     let surfaces = leak_test_surfaces();
-    leaks_and_doubles(
-        &surfaces,
-        Spots::Edges,
-        budget.rays,
-        0x17_0003,
-        aim_anywhere,
-    )
-}
-
-fn shared_vertex_tally(budget: &Budget) -> Tally {
-    let surfaces = leak_test_surfaces();
-    leaks_and_doubles(
-        &surfaces,
-        Spots::Vertices,
-        budget.rays,
-        0x17_0004,
-        aim_anywhere,
-    )
+    leaks_and_doubles(&surfaces, spots, budget.rays, seed, aim_anywhere)
 }
 
 /// Rays at points of shared edges of chapter 8's leak surfaces (a
 /// tilted icosphere, the same 1000 away, a tiled floor), from random
 /// directions that face both triangles: leaks.
 fn shared_edge_leaks(budget: &Budget) -> Vec<(Count, Expect)> {
-    let tally = shared_edge_tally(budget);
-    per_test(tally.leaks, tally.trials, WATERTIGHT_NEVER)
+    leak_surfaces_tally(budget, Spots::Edges, 0x17_0003).counted_leaks()
 }
 
 /// The same rays: double hits.
 fn shared_edge_doubles(budget: &Budget) -> Vec<(Count, Expect)> {
-    let tally = shared_edge_tally(budget);
-    per_test(tally.doubles, tally.trials, WATERTIGHT_NEVER)
+    leak_surfaces_tally(budget, Spots::Edges, 0x17_0003).counted_doubles()
 }
 
 /// Rays at the inner vertices of the same surfaces, from directions
 /// their whole fan faces: leaks.
 fn shared_vertex_leaks(budget: &Budget) -> Vec<(Count, Expect)> {
-    let tally = shared_vertex_tally(budget);
-    per_test(tally.leaks, tally.trials, WATERTIGHT_NEVER)
+    leak_surfaces_tally(budget, Spots::Vertices, 0x17_0004).counted_leaks()
 }
 
 /// The same rays: double hits.
 fn shared_vertex_doubles(budget: &Budget) -> Vec<(Count, Expect)> {
-    let tally = shared_vertex_tally(budget);
-    per_test(tally.doubles, tally.trials, WATERTIGHT_NEVER)
+    leak_surfaces_tally(budget, Spots::Vertices, 0x17_0004).counted_doubles()
 }
 
 /// An icosphere rotated, scaled by 4 and its corners rounded to
@@ -774,46 +747,40 @@ fn quantized_icosphere() -> Vec<Surface> {
     vec![Surface::new(&quantized)]
 }
 
+/// Leaks plus double hits of rays made by `aim` at the edges and
+/// vertices of `surfaces`: only the watertight test is built to have
+/// none.
+fn at_edges_and_vertices(
+    surfaces: &[Surface],
+    budget: &Budget,
+    seed: u64,
+    aim: Aim,
+) -> Vec<(Count, Expect)> {
+    let tally =
+        leaks_and_doubles(surfaces, Spots::Both, budget.rays, seed, aim);
+    tally.counted(tally.either())
+}
+
 /// Rays at lattice points of a quantized icosphere's edges and vertices
 /// along small integer directions: leaks and double hits.
 fn quantized_mesh(budget: &Budget) -> Vec<(Count, Expect)> {
     let surfaces = quantized_icosphere();
-    let tally = leaks_and_doubles(
-        &surfaces,
-        Spots::Both,
-        budget.rays,
-        0x17_0005,
-        aim_on_the_lattice,
-    );
-    per_test(tally.either(), tally.trials, WATERTIGHT_NEVER)
+    at_edges_and_vertices(&surfaces, budget, 0x17_0005, aim_on_the_lattice)
 }
 
 /// Rays along the axes at lattice points of a quantized icosphere's
 /// edges and vertices: every edge function exact, ties exactly 0.
 fn axis_parallel(budget: &Budget) -> Vec<(Count, Expect)> {
     let surfaces = quantized_icosphere();
-    let tally = leaks_and_doubles(
-        &surfaces,
-        Spots::Both,
-        budget.rays,
-        0x17_0006,
-        aim_along_an_axis,
-    );
-    per_test(tally.either(), tally.trials, WATERTIGHT_NEVER)
+    at_edges_and_vertices(&surfaces, budget, 0x17_0006, aim_along_an_axis)
 }
 
 /// The same rays (the same seed) with the direction's zero components
 /// −0.0: equal counts show that the sign of zero changes nothing.
 fn negative_zero(budget: &Budget) -> Vec<(Count, Expect)> {
     let surfaces = quantized_icosphere();
-    let tally = leaks_and_doubles(
-        &surfaces,
-        Spots::Both,
-        budget.rays,
-        0x17_0006,
-        aim_along_an_axis_negative_zero,
-    );
-    per_test(tally.either(), tally.trials, WATERTIGHT_NEVER)
+    let aim = aim_along_an_axis_negative_zero;
+    at_edges_and_vertices(&surfaces, budget, 0x17_0006, aim)
 }
 
 /// A flat grid of 6 × 6 squares split into triangles, on a tilted
@@ -847,14 +814,7 @@ fn coplanar_grid() -> Vec<Surface> {
 /// different hit points on either side of an edge.
 fn coplanar_neighbours(budget: &Budget) -> Vec<(Count, Expect)> {
     let surfaces = coplanar_grid();
-    let tally = leaks_and_doubles(
-        &surfaces,
-        Spots::Both,
-        budget.rays,
-        0x17_0007,
-        aim_anywhere,
-    );
-    per_test(tally.either(), tally.trials, WATERTIGHT_NEVER)
+    at_edges_and_vertices(&surfaces, budget, 0x17_0007, aim_anywhere)
 }
 
 /// Rays at the edges and vertices of a closed mesh at 1e7 (radius 1.4;
@@ -866,14 +826,7 @@ fn huge_coordinates(budget: &Budget) -> Vec<(Count, Expect)> {
         DVec3::new(1.0e7 + 0.317, -7.3e6 - 0.21, 4.1e6 + 0.777),
     );
     let surfaces = [Surface::new(&mesh)];
-    let tally = leaks_and_doubles(
-        &surfaces,
-        Spots::Both,
-        budget.rays,
-        0x17_0008,
-        aim_anywhere,
-    );
-    per_test(tally.either(), tally.trials, WATERTIGHT_NEVER)
+    at_edges_and_vertices(&surfaces, budget, 0x17_0008, aim_anywhere)
 }
 
 /// A vertex on another triangle's edge: triangle A = (p, q, r) on one
@@ -937,15 +890,8 @@ fn t_junction(budget: &Budget) -> Vec<(Count, Expect)> {
             p + rng.next_f64() * (q - p)
         };
         let d = facing(rng, &normals);
-        let from = target - 8.0 * (1.0 + rng.next_f64()) * d;
-        let ray = Ray::new(from, target - from);
-        TriangleTest::ALL.map(|test| {
-            let hits = mesh
-                .iter()
-                .filter(|v| hit_once(test, **v, &ray, EDGE_REACH).is_some())
-                .count();
-            hits != 1
-        })
+        let ray = ray_to(target, d, 8.0 * (1.0 + rng.next_f64()));
+        not_hit_once(&mesh, &ray)
     });
     per_test(failures, budget.rays as u64, ALL_SHOWN)
 }
@@ -954,16 +900,23 @@ fn t_junction(budget: &Budget) -> Vec<(Count, Expect)> {
 // Thin, flat and duplicated triangles.
 // ---------------------------------------------------------------------
 
+/// A needle's long edge a–b (a in the cube [−1, 1]³, b 0.5…2 away
+/// along a random unit `along`), and a unit `across` ⟂ it.
+fn long_edge(rng: &mut SplitMix64) -> (DVec3, DVec3, DVec3, DVec3) {
+    let a = cube_point(rng);
+    let along = rng.unit_vector();
+    let across = along.any_orthonormal_vector();
+    let b = a + uniform(rng, 0.5, 2.0) * along;
+    (a, b, along, across)
+}
+
 /// A needle: V₀ random, V₁ 0.5…2 away, V₂ 1e-9 from V₁ across the
 /// needle. Half the rays aim inside (barycentric coordinates ≥ 0.05:
 /// must hit at t = 1 to 1e-6), half beside the long edge V₀V₁ by
 /// 0.05…1 needle widths (must miss).
 fn needles(budget: &Budget) -> Vec<(Count, Expect)> {
     let failures = count_failures(budget.rays, 0x17_000A, |rng| {
-        let v0 = cube_point(rng);
-        let along = rng.unit_vector();
-        let across = along.any_orthonormal_vector();
-        let v1 = v0 + uniform(rng, 0.5, 2.0) * along;
+        let (v0, v1, along, across) = long_edge(rng);
         let v = [v0, v1, v1 + 1e-9 * across];
         let inside = rng.next_f64() < 0.5;
         // (u, w): u + w along the needle, w across it (w < 0: beside)
@@ -975,8 +928,7 @@ fn needles(budget: &Budget) -> Vec<(Count, Expect)> {
         };
         let target = at(&v, length - w, w);
         let d = not_grazing(rng, along.cross(across));
-        let from = target - 3.0 * d;
-        let ray = Ray::new(from, target - from);
+        let ray = ray_to(target, d, 3.0);
         TriangleTest::ALL.map(|test| {
             let t = hit_once(test, v, &ray, Interval::FORWARD);
             if inside {
@@ -997,25 +949,14 @@ fn needles(budget: &Budget) -> Vec<(Count, Expect)> {
 /// Rays at points of a–b: leaks and double hits.
 fn needle_pair(budget: &Budget) -> Vec<(Count, Expect)> {
     let failures = count_failures(budget.rays, 0x17_000B, |rng| {
-        let a = cube_point(rng);
-        let along = rng.unit_vector();
-        let across = along.any_orthonormal_vector();
-        let b = a + uniform(rng, 0.5, 2.0) * along;
+        let (a, b, along, across) = long_edge(rng);
         let middle = 0.5 * (a + b);
         let (c, e) = (middle + 1e-9 * across, middle - 1e-9 * across);
         let mesh = [[a, b, c], [b, a, e]];
         let n = along.cross(across);
         let target = a + uniform(rng, 0.05, 0.95) * (b - a);
         let d = facing(rng, &[n]);
-        let from = target - 3.0 * d;
-        let ray = Ray::new(from, target - from);
-        TriangleTest::ALL.map(|test| {
-            let hits = mesh
-                .iter()
-                .filter(|v| hit_once(test, **v, &ray, EDGE_REACH).is_some())
-                .count();
-            hits != 1
-        })
+        not_hit_once(&mesh, &ray_to(target, d, 3.0))
     });
     per_test(failures, budget.rays as u64, WATERTIGHT_NEVER)
 }
@@ -1041,8 +982,7 @@ fn zero_area(budget: &Budget) -> Vec<(Count, Expect)> {
         let target = a + rng.next_f64() * (b - a);
         let d = rng.unit_vector();
         let ray = Ray::new(target - 3.0 * d, d);
-        TriangleTest::ALL
-            .map(|test| hit_once(test, v, &ray, Interval::UNIVERSE).is_some())
+        hits_anywhere(v, &ray)
     });
     per_test(failures, budget.rays as u64, ALL_SHOWN)
 }
@@ -1066,8 +1006,7 @@ fn duplicated(budget: &Budget) -> Vec<(Count, Expect)> {
         let sign = if rng.next_f64() < 0.5 { 1.0 } else { -1.0 };
         let target = on_edge + sign * decades(rng, -16.0, -9.0) * inward;
         let d = not_grazing(rng, normal(&v));
-        let from = target - 3.0 * d;
-        let ray = Ray::new(from, target - from);
+        let ray = ray_to(target, d, 3.0);
         TriangleTest::ALL.map(|test| {
             let first = hit_once(test, v, &ray, Interval::FORWARD);
             let second = hit_once(test, copy, &ray, Interval::FORWARD);

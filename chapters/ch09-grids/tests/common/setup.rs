@@ -1,8 +1,10 @@
 //! The DDA's setup as the lecture's steps define it, to judge a setup by:
 //! exercise 1's property test checks any grid with it, and exercise 2's
 //! tests check the setup each of their walks starts from, so that a fault
-//! in exercise 1 is reported as one and not blamed on the walk.
-use ch09::{Dda, Interval, Lattice, Ray};
+//! in exercise 1 is reported as one and not blamed on the walk; and any
+//! grid, for both exercises' property tests.
+use ch09::{Aabb, DVec3, Dda, Interval, Lattice, Ray};
+use proptest::prelude::*;
 
 /// What is wrong with `got` as the setup of `ray` within `interval`
 /// (`expected …, got …`), or None if it is right (t values to rounding).
@@ -105,4 +107,18 @@ fn close(got: f64, expected: f64, scale: f64) -> bool {
     got == expected
         || (got.is_nan() && expected.is_nan())
         || (got - expected).abs() <= 1e-12 * scale
+}
+
+/// Any grid: its box anywhere in [−10, 10]³, 0.5 to 8 wide along each
+/// axis, in 1 to 11 cells along each (so cells of any size and shape).
+pub fn lattice_strategy() -> impl Strategy<Value = Lattice> {
+    (
+        prop::array::uniform3(-10.0..10.0f64),
+        prop::array::uniform3(0.5..8.0f64),
+        prop::array::uniform3(1usize..12),
+    )
+        .prop_map(|(min, size, cells)| {
+            let min = DVec3::from(min);
+            Lattice::new(Aabb::new(min, min + DVec3::from(size)), cells)
+        })
 }

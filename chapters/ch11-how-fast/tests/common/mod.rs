@@ -1,22 +1,88 @@
-//! What the appendix's test files share: the bunny, the one comparison
-//! of answers, and a tree deeper than the walks' fixed stacks.
+//! What the appendix's test files share: a mesh's rays and brute force's
+//! answers to them, the one comparison of answers, and a tree deeper than
+//! the walks' fixed stacks. (The bunny is `raystep_bench::bunny`.)
 #![allow(dead_code)]
-use std::path::Path;
+use ch08::{
+    BoundingSphere, Builder, Bvh, Interval, MeshAccelerator, MeshBvh, MeshHit,
+    NodePrecision, Ray32, TraceCounts, triangle_boxes,
+};
+use ch11::FastBvh;
+use raystep_bench::{camera_rays, incoherent_rays};
+use raystep_core::{Aabb, DVec3};
 
-use ch08::MeshHit;
-use raystep_core::DVec3;
-use raystep_scene::Mesh;
-
-/// The Stanford bunny beside the workspace: `../shared/meshes/bunny.obj`.
-pub fn bunny() -> Vec<[DVec3; 3]> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/meshes/bunny.obj");
-    let mesh = Mesh::load_obj(&path).unwrap_or_else(|e| {
-        panic!("{e} (the bunny lives in ../shared/meshes beside the workspace)")
-    });
-    (0..mesh.triangles.len())
-        .map(|k| mesh.triangle(k))
+/// Rays at `triangles`: `camera`² camera rays and `incoherent` rays
+/// through their box (seed 11), rounded to `f32`.
+pub fn rays(
+    triangles: &[[DVec3; 3]],
+    camera: u32,
+    incoherent: usize,
+) -> Vec<Ray32> {
+    let bounds = Aabb::around(triangles.iter().flatten().copied());
+    let sphere = BoundingSphere::around_box(&bounds);
+    camera_rays(sphere, camera)
+        .iter()
+        .chain(&incoherent_rays(bounds, incoherent, 11))
+        .map(Ray32::rounded)
         .collect()
+}
+
+/// Brute force's answers to `rays`: the closest hit, and whether
+/// anything is hit up to half its `t` and up to just past it (or up to
+/// 10 for a miss) — the any-hit questions.
+pub struct Truth {
+    /// The closest hit of each ray.
+    pub closest: Vec<Option<MeshHit>>,
+    /// Each any-hit question and its answer, ray after ray.
+    pub any: Vec<(Interval, bool)>,
+}
+
+pub fn truth(triangles: &[[DVec3; 3]], rays: &[Ray32]) -> Truth {
+    let tree = Bvh::build(&triangle_boxes(triangles), Builder::Median);
+    let brute = MeshBvh::new(triangles, &tree, NodePrecision::Double);
+    let closest: Vec<_> = rays
+        .iter()
+        .map(|ray| brute.brute_force(ray, Interval::FORWARD))
+        .collect();
+    let any = rays
+        .iter()
+        .zip(&closest)
+        .flat_map(|(ray, hit)| {
+            let ends = match hit {
+                Some(hit) => vec![0.5 * hit.t, hit.t * (1.0 + 1e-12)],
+                None => vec![10.0],
+            };
+            ends.into_iter().map(|end| {
+                let interval = Interval::new(0.0, end);
+                (interval, brute.brute_force(ray, interval).is_some())
+            })
+        })
+        .collect();
+    Truth { closest, any }
+}
+
+/// (closest-hit, any-hit) disagreements of `fast` with brute force's
+/// `truth`.
+pub fn wrong(fast: &FastBvh, rays: &[Ray32], truth: &Truth) -> (usize, usize) {
+    let mut counts = TraceCounts::default();
+    let closest = rays
+        .iter()
+        .zip(&truth.closest)
+        .filter(|(ray, truth)| {
+            let ours = fast.closest_hit(ray, Interval::FORWARD, &mut counts);
+            !agree(**truth, ours)
+        })
+        .count();
+    let mut asked = truth.any.iter();
+    let mut any = 0;
+    for (ray, hit) in rays.iter().zip(&truth.closest) {
+        for _ in 0..if hit.is_some() { 2 } else { 1 } {
+            let &(interval, blocked) = asked.next().unwrap();
+            any += usize::from(
+                fast.any_hit(ray, interval, &mut counts) != blocked,
+            );
+        }
+    }
+    (closest, any)
 }
 
 /// Both miss, or both hit at the same `t`.
