@@ -98,8 +98,7 @@ pub fn select(text: &str, selector: &str) -> Result<String, String> {
 
 /// `N` (line N), `N:M`, `N:` and `:M`, 1-based and inclusive, as mdBook.
 fn line_range(
-    selector: &str,
-    count: usize,
+    selector: &str, count: usize,
 ) -> Result<std::ops::Range<usize>, String> {
     let number = |s: &str, default: usize| -> Result<usize, String> {
         if s.is_empty() {
