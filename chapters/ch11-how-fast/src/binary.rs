@@ -7,7 +7,7 @@
 //! split is taken first: the sign of the direction along the split axis
 //! says which, with no comparison of `t`s. The far child waits on an
 //! explicit stack; nothing recurses.
-use ch08::{Bvh, MeshAccelerator, MeshHit, Ray32, TraceCounts, outward};
+use ch08::{Bvh, MeshHit, Ray32, TraceCounts, outward};
 use raystep_core::{Aabb, DVec3, Interval};
 use smallvec::SmallVec;
 
@@ -38,28 +38,6 @@ pub struct Binary {
     nodes: Vec<Node>,
     /// The triangles of its leaves, and those outside it.
     leaves: Leaves,
-}
-
-impl MeshAccelerator for Binary {
-    /// The closest hit within `interval`, counted.
-    fn closest_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> Option<MeshHit> {
-        self.trace::<false>(ray, interval, counts)
-    }
-
-    /// Does anything meet the ray within `interval`?
-    fn any_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
-    ) -> bool {
-        self.trace::<true>(ray, interval, counts).is_some()
-    }
 }
 
 impl Binary {
@@ -93,10 +71,7 @@ impl Binary {
     /// The closest hit (or, `ANY`, the first found) within `interval`.
     #[inline(always)]
     pub(crate) fn trace<const ANY: bool>(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         let ray = self.leaves.ray(ray)?;
         self.walk(&ray, interval, ANY, counts)
@@ -115,10 +90,7 @@ impl Binary {
     // ANCHOR: walk
     /// The walk: the closest hit, or (`any`) the first one found.
     fn walk(
-        &self,
-        ray: &FastRay,
-        interval: Interval,
-        any: bool,
+        &self, ray: &FastRay, interval: Interval, any: bool,
         counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         // Step 1: triangles outside the tree (none in a finite mesh).

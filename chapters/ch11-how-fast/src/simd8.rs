@@ -18,6 +18,48 @@ pub fn available() -> bool {
 }
 
 // ANCHOR: boxes8
+/// One axis of the slab test for eight boxes at once: their entry and
+/// exit planes on `axis` (ordered by the ray's direction), the near and
+/// far ends narrowed, the exit widened as in the scalar test.
+///
+/// # Safety
+/// The CPU must have AVX ([`available`]).
+#[inline(always)]
+unsafe fn slab8(
+    (near, far): (&mut __m256, &mut __m256), (enter, exit): (__m256, __m256),
+    ray: &FastRay, axis: usize,
+) {
+    // SAFETY: the caller has checked AVX.
+    unsafe {
+        let o = _mm256_set1_ps(ray.origin[axis]);
+        let inverse = _mm256_set1_ps(ray.inverse[axis]);
+        let t0 = _mm256_mul_ps(_mm256_sub_ps(enter, o), inverse);
+        let t1 = _mm256_mul_ps(
+            _mm256_mul_ps(_mm256_sub_ps(exit, o), inverse),
+            _mm256_set1_ps(WIDEN),
+        );
+        *near = _mm256_max_ps(t0, *near);
+        *far = _mm256_min_ps(t1, *far);
+    }
+}
+
+/// The eight boxes' entries, and which of them the ray meets
+/// (`near ≤ far`) as a mask.
+///
+/// # Safety
+/// The CPU must have AVX ([`available`]).
+#[inline(always)]
+unsafe fn met8(near: __m256, far: __m256) -> ([f32; 8], u32) {
+    // SAFETY: the caller has checked AVX; the store writes eight f32s
+    // into a [f32; 8].
+    unsafe {
+        let hit = _mm256_cmp_ps::<_CMP_LE_OQ>(near, far);
+        let mut t = [0.0; 8];
+        _mm256_storeu_ps(t.as_mut_ptr(), near);
+        (t, _mm256_movemask_ps(hit) as u32)
+    }
+}
+
 /// The slab test of a node's eight boxes at once, as
 /// [`boxes4`](crate::simd4::boxes4) does four.
 ///
@@ -25,39 +67,26 @@ pub fn available() -> bool {
 /// The CPU must have AVX ([`available`]).
 #[inline(always)]
 unsafe fn boxes8(
-    node: &WideNode<8>,
-    ray: &FastRay,
-    (t_min, t_max): (f32, f32),
+    node: &WideNode<8>, ray: &FastRay, (t_min, t_max): (f32, f32),
 ) -> ([f32; 8], u32) {
     // SAFETY: the caller has checked AVX; each load reads the eight f32s
-    // of a [f32; 8] row, the store writes eight into a [f32; 8].
+    // of a [f32; 8] row.
     unsafe {
         let mut near = _mm256_set1_ps(t_min);
         let mut far = _mm256_set1_ps(t_max);
-        let widen = _mm256_set1_ps(WIDEN);
         for axis in 0..3 {
             let (enter, exit) = if ray.negative[axis] == 1 {
                 (&node.hi[axis], &node.lo[axis])
             } else {
                 (&node.lo[axis], &node.hi[axis])
             };
-            let enter = _mm256_loadu_ps(enter.as_ptr());
-            let exit = _mm256_loadu_ps(exit.as_ptr());
-            let o = _mm256_set1_ps(ray.origin[axis]);
-            let inverse = _mm256_set1_ps(ray.inverse[axis]);
-            let t0 = _mm256_mul_ps(_mm256_sub_ps(enter, o), inverse);
-            let t1 = _mm256_mul_ps(
-                _mm256_mul_ps(_mm256_sub_ps(exit, o), inverse),
-                widen,
+            let planes = (
+                _mm256_loadu_ps(enter.as_ptr()),
+                _mm256_loadu_ps(exit.as_ptr()),
             );
-            near = _mm256_max_ps(t0, near);
-            far = _mm256_min_ps(t1, far);
+            slab8((&mut near, &mut far), planes, ray, axis);
         }
-        let hit = _mm256_cmp_ps::<_CMP_LE_OQ>(near, far);
-        let mask = _mm256_movemask_ps(hit) as u32;
-        let mut t = [0.0; 8];
-        _mm256_storeu_ps(t.as_mut_ptr(), near);
-        (t, mask)
+        met8(near, far)
     }
 }
 // ANCHOR_END: boxes8
@@ -65,9 +94,7 @@ unsafe fn boxes8(
 /// [`boxes8`] where this CPU has AVX, `None` elsewhere: for the tests
 /// that hold it to the scalar kernel.
 pub fn boxes8_where_available(
-    node: &WideNode<8>,
-    ray: &FastRay,
-    span: (f32, f32),
+    node: &WideNode<8>, ray: &FastRay, span: (f32, f32),
 ) -> Option<([f32; 8], u32)> {
     // SAFETY: called only after the CPU said it has AVX.
     available().then(|| unsafe { boxes8(node, ray, span) })
@@ -80,10 +107,7 @@ pub fn boxes8_where_available(
 /// The CPU must have AVX ([`available`]).
 #[target_feature(enable = "avx")]
 pub fn trace<const ANY: bool>(
-    tree: &Wide<8>,
-    ray: &Ray32,
-    interval: Interval,
-    counts: &mut TraceCounts,
+    tree: &Wide<8>, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
 ) -> Option<MeshHit> {
     // SAFETY (of the closure's call): this function runs only on a CPU
     // with AVX, which its callers check.
@@ -99,10 +123,7 @@ pub fn trace<const ANY: bool>(
 /// The CPU must have AVX2 ([`available_avx2`]).
 #[target_feature(enable = "avx2")]
 pub fn trace_avx2<const ANY: bool>(
-    tree: &Wide<8>,
-    ray: &Ray32,
-    interval: Interval,
-    counts: &mut TraceCounts,
+    tree: &Wide<8>, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
 ) -> Option<MeshHit> {
     // SAFETY: as in `trace` (AVX2 includes AVX).
     tree.trace::<ANY>(ray, interval, counts, |n, r, s| unsafe {
@@ -126,9 +147,7 @@ pub fn available_avx2() -> bool {
 /// The CPU must have AVX2 ([`available_avx2`]).
 #[inline(always)]
 unsafe fn compressed_boxes8(
-    node: &CompressedNode,
-    ray: &FastRay,
-    (t_min, t_max): (f32, f32),
+    node: &CompressedNode, ray: &FastRay, (t_min, t_max): (f32, f32),
 ) -> ([f32; 8], u32) {
     // SAFETY: the caller has checked AVX2; each 64-bit load reads the
     // eight bytes of a [u8; 8] row, the store writes eight f32s into a
@@ -136,7 +155,6 @@ unsafe fn compressed_boxes8(
     unsafe {
         let mut near = _mm256_set1_ps(t_min);
         let mut far = _mm256_set1_ps(t_max);
-        let widen = _mm256_set1_ps(WIDEN);
         for axis in 0..3 {
             let (enter, exit) = if ray.negative[axis] == 1 {
                 (&node.qhi[axis], &node.qlo[axis])
@@ -152,22 +170,11 @@ unsafe fn compressed_boxes8(
                 let q = _mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(bytes));
                 _mm256_add_ps(_mm256_mul_ps(q, scale), origin)
             };
-            let (enter, exit) = (decode(enter), decode(exit));
-            let o = _mm256_set1_ps(ray.origin[axis]);
-            let inverse = _mm256_set1_ps(ray.inverse[axis]);
-            let t0 = _mm256_mul_ps(_mm256_sub_ps(enter, o), inverse);
-            let t1 = _mm256_mul_ps(
-                _mm256_mul_ps(_mm256_sub_ps(exit, o), inverse),
-                widen,
-            );
-            near = _mm256_max_ps(t0, near);
-            far = _mm256_min_ps(t1, far);
+            let planes = (decode(enter), decode(exit));
+            slab8((&mut near, &mut far), planes, ray, axis);
         }
-        let hit = _mm256_cmp_ps::<_CMP_LE_OQ>(near, far);
-        let mask = _mm256_movemask_ps(hit) as u32 & u32::from(node.valid);
-        let mut t = [0.0; 8];
-        _mm256_storeu_ps(t.as_mut_ptr(), near);
-        (t, mask)
+        let (t, mask) = met8(near, far);
+        (t, mask & u32::from(node.valid))
     }
 }
 // ANCHOR_END: compressed_boxes8
@@ -175,9 +182,7 @@ unsafe fn compressed_boxes8(
 /// [`compressed_boxes8`] where this CPU has AVX2, `None` elsewhere: for
 /// the tests that hold it to the scalar kernel.
 pub fn compressed_boxes8_where_available(
-    node: &CompressedNode,
-    ray: &FastRay,
-    span: (f32, f32),
+    node: &CompressedNode, ray: &FastRay, span: (f32, f32),
 ) -> Option<([f32; 8], u32)> {
     // SAFETY: called only after the CPU said it has AVX2.
     available_avx2().then(|| unsafe { compressed_boxes8(node, ray, span) })
@@ -190,9 +195,7 @@ pub fn compressed_boxes8_where_available(
 /// The CPU must have AVX2 ([`available_avx2`]).
 #[target_feature(enable = "avx2")]
 pub fn trace_compressed<const ANY: bool>(
-    tree: &Wide<8, CompressedNode>,
-    ray: &Ray32,
-    interval: Interval,
+    tree: &Wide<8, CompressedNode>, ray: &Ray32, interval: Interval,
     counts: &mut TraceCounts,
 ) -> Option<MeshHit> {
     // SAFETY (of the closure's call): this function runs only on a CPU
