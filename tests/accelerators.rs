@@ -53,10 +53,7 @@ impl BoxedList {
 
 impl Accelerator for BoxedList {
     fn closest_hit(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
     ) -> Option<(usize, Hit)> {
         self.closest_asked.fetch_add(1, Ordering::Relaxed);
         let mut closest = None;
@@ -74,10 +71,7 @@ impl Accelerator for BoxedList {
     }
 
     fn any_hit(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
     ) -> bool {
         self.any_asked.fetch_add(1, Ordering::Relaxed);
         (0..objects.len()).any(|index| {
@@ -158,9 +152,7 @@ fn every_tracer(world: &World) -> Vec<(&'static str, Image, String)> {
 /// as `expected` (every tracer on the plain list), asked `through` an
 /// accelerator named in the messages; how many tracers were compared.
 fn assert_same(
-    expected: &[(&'static str, Image, String)],
-    world: &World,
-    through: &str,
+    expected: &[(&'static str, Image, String)], world: &World, through: &str,
     path: &Path,
 ) -> usize {
     let actual = every_tracer(world);
@@ -300,9 +292,7 @@ fn every_tracer_gives_the_same_bytes_on_a_kd_tree() {
 /// or secondary ray one closest-hit question, a shadow ray one any-hit
 /// question. A tracer that kept a loop of its own would ask fewer.
 fn every_ray_goes_through_the_seam(
-    world: &World,
-    boxed: &BoxedList,
-    path: &Path,
+    world: &World, boxed: &BoxedList, path: &Path,
 ) {
     let pixels = u64::from(world.width * world.height);
     let _ = boxed.asked();

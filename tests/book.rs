@@ -114,9 +114,7 @@ fn problems(page: &Path, text: &str, files: &dyn Files) -> Vec<Problem> {
 /// Checks `path`, `path:anchor`, `path:N`, `path:N:M`, `path::M`, `path:N:`
 /// the way the book reads them (`raystep_book::include`).
 fn check_include(
-    dir: &Path,
-    include: &include::Include,
-    files: &dyn Files,
+    dir: &Path, include: &include::Include, files: &dyn Files,
 ) -> Result<(), String> {
     let path = include.path();
     if path.is_empty() {

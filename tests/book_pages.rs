@@ -130,9 +130,7 @@ fn outside_folds(shown: &str) -> String {
 /// listing computes cos φ as `refract` does; that line is the lecture's,
 /// not the exercise's alone).
 fn answer_lines(
-    reference: &str,
-    stub: &str,
-    elsewhere: &BTreeSet<String>,
+    reference: &str, stub: &str, elsewhere: &BTreeSet<String>,
 ) -> Vec<String> {
     let stub_lines: Vec<&str> = stub.lines().map(str::trim).collect();
     reference

@@ -360,10 +360,7 @@ const INSPECT: &str = r#"
 
 /// Opens one page and collects what it shows and what its console says.
 fn visit(
-    browser: &mut Chromium,
-    tab: &Tab,
-    book: &Path,
-    page: &Path,
+    browser: &mut Chromium, tab: &Tab, book: &Path, page: &Path,
 ) -> Result<Seen, String> {
     let at = |e: String| format!("{}: {e}", page.display());
     for domain in ["Log", "Runtime", "Page"] {
@@ -435,10 +432,7 @@ fn console_error(event: &Value) -> Option<String> {
 
 /// The whole page as a PNG.
 fn screenshot(
-    browser: &mut Chromium,
-    tab: &Tab,
-    seen: &Seen,
-    path: &Path,
+    browser: &mut Chromium, tab: &Tab, seen: &Seen, path: &Path,
 ) -> Result<(), String> {
     let shot = browser.call(
         Some(tab),

@@ -42,9 +42,7 @@ impl Chromium {
     /// Starts `chrome` headless with a window of `width` × `height` px and
     /// `flags`, and connects to it.
     pub fn start(
-        chrome: &Path,
-        (width, height): (u32, u32),
-        flags: &[&str],
+        chrome: &Path, (width, height): (u32, u32), flags: &[&str],
     ) -> Result<Chromium, String> {
         let profile = std::env::temp_dir()
             .join(format!("raystep-chromium-{}", std::process::id()));
@@ -123,10 +121,7 @@ impl Chromium {
     /// Sends one command (to a tab, or to the browser when `tab` is
     /// `None`) and waits for its reply, keeping the events that come first.
     pub fn call(
-        &mut self,
-        tab: Option<&Tab>,
-        method: &str,
-        params: Value,
+        &mut self, tab: Option<&Tab>, method: &str, params: Value,
     ) -> Result<Value, String> {
         let id = self.next_id;
         self.next_id += 1;
@@ -216,9 +211,7 @@ impl Chromium {
     /// Runs `script` in the tab, waits for its promise, and returns its
     /// value; a thrown exception is an error.
     pub fn evaluate(
-        &mut self,
-        tab: &Tab,
-        script: &str,
+        &mut self, tab: &Tab, script: &str,
     ) -> Result<Value, String> {
         let mut result = self.call(
             Some(tab),

@@ -66,12 +66,8 @@ impl Crate {
     }
 
     fn read_items(
-        &mut self,
-        items: &[syn::Item],
-        file: &Path,
-        index: bool,
-        children_dir: &Path,
-        path: ModPath,
+        &mut self, items: &[syn::Item], file: &Path, index: bool,
+        children_dir: &Path, path: ModPath,
     ) {
         let mut module = Module {
             file: file.to_path_buf(),
@@ -238,8 +234,7 @@ fn is_test(attrs: &[syn::Attribute]) -> bool {
 
 /// A `use` tree as paths, each with the name it binds (`None`: a glob).
 fn flatten(
-    tree: &syn::UseTree,
-    prefix: Vec<String>,
+    tree: &syn::UseTree, prefix: Vec<String>,
     out: &mut Vec<(Vec<String>, Option<String>)>,
 ) {
     let with = |name: String| {

@@ -12,9 +12,7 @@ impl Plane {
     /// Fails with [`Degenerate`] when a coordinate is not finite, two points
     /// coincide, the points are collinear, or the edges overflow.
     pub fn through(
-        p0: DVec3,
-        p1: DVec3,
-        p2: DVec3,
+        p0: DVec3, p1: DVec3, p2: DVec3,
     ) -> Result<Plane, Degenerate> {
         // TODO: E1 = P1 − P0, E2 = P2 − P0, N = E1×E2/|E1×E2|, d = −N·P0.
         // Errors: Degenerate::NonFinite (NaN/infinite input), ::Overflow

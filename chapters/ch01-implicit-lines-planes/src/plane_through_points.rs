@@ -10,9 +10,7 @@ impl Plane {
     /// Fails with [`Degenerate`] when a coordinate is not finite, two points
     /// coincide, the points are collinear, or the edges overflow.
     pub fn through(
-        p0: DVec3,
-        p1: DVec3,
-        p2: DVec3,
+        p0: DVec3, p1: DVec3, p2: DVec3,
     ) -> Result<Plane, Degenerate> {
         if !(p0.is_finite() && p1.is_finite() && p2.is_finite()) {
             return Err(Degenerate::NonFinite);

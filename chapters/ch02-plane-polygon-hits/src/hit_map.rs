@@ -40,9 +40,7 @@ impl HitMap {
 /// The closest hit of `ray` among `polygons` within `interval`, with the
 /// index of the polygon hit.
 pub fn closest_hit(
-    polygons: &[Polygon],
-    ray: &Ray,
-    interval: Interval,
+    polygons: &[Polygon], ray: &Ray, interval: Interval,
 ) -> Option<(usize, Hit)> {
     let mut closest = None;
     let mut interval = interval;
@@ -60,10 +58,7 @@ pub fn closest_hit(
 /// Casts one ray through the centre of every pixel of a `width × height`
 /// image and records the closest polygon.
 pub fn hit_map(
-    polygons: &[Polygon],
-    camera: &Camera,
-    width: u32,
-    height: u32,
+    polygons: &[Polygon], camera: &Camera, width: u32, height: u32,
 ) -> HitMap {
     let mut ids = Vec::with_capacity((width * height) as usize);
     for row in 0..height {

@@ -6,9 +6,7 @@ use raystep_core::{Aabb, Hit, Interval, Ray, Shape};
 
 /// The hit of `ray` with `plane` within `interval`, if any.
 pub fn intersect_plane(
-    plane: &Plane,
-    ray: &Ray,
-    interval: Interval,
+    plane: &Plane, ray: &Ray, interval: Interval,
 ) -> Option<Hit> {
     let t = ray_plane(plane, ray, interval).t()?;
     Some(Hit {

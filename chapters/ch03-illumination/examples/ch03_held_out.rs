@@ -330,10 +330,7 @@ fn material(rng: &mut Rng) -> Material {
 /// mirrored toward the eye (a highlight); never within 1e-9 of the
 /// tangent plane unless exactly in it.
 fn light(
-    rng: &mut Rng,
-    n: DVec3,
-    eye: DVec3,
-    axis: Option<usize>,
+    rng: &mut Rng, n: DVec3, eye: DVec3, axis: Option<usize>,
 ) -> LightSample {
     let direction = loop {
         let l = match rng.below(6) {

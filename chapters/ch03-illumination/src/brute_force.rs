@@ -13,10 +13,7 @@ impl Accelerator for BruteForce {
     // ANCHOR: closest_hit
     /// For each object: does the ray hit it? Keep the closest.
     fn closest_hit(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
     ) -> Option<(usize, Hit)> {
         let mut closest = None;
         let mut interval = interval;
@@ -37,10 +34,7 @@ impl Accelerator for BruteForce {
     /// and in a scene where most shadow rays are blocked most of the loop
     /// is skipped.
     fn any_hit(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
     ) -> bool {
         for object in objects {
             if object.shape.intersect(ray, interval).is_some() {

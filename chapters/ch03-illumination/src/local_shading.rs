@@ -13,10 +13,7 @@ use raystep_scene::Material;
 /// reflection pointing away from the eye (Rᵢ·V < 0) adds no highlight:
 /// the formula's products would go negative there, and light cannot.
 pub fn shading_terms(
-    material: &Material,
-    normal: DVec3,
-    to_eye: DVec3,
-    ambient: DVec3,
+    material: &Material, normal: DVec3, to_eye: DVec3, ambient: DVec3,
     lights: &[LightSample],
 ) -> ShadingTerms {
     // Step 1: the ambient term ka·Ia.

@@ -15,9 +15,7 @@ pub fn shade(world: &World, ray: &Ray) -> Option<ShadingTerms> {
 /// is the hit's normal turned toward the viewer. Chapter 4 passes its
 /// shadow rays here.
 pub fn shade_with(
-    world: &World,
-    ray: &Ray,
-    visibility: impl Fn(&Hit, DVec3, &Light) -> f64,
+    world: &World, ray: &Ray, visibility: impl Fn(&Hit, DVec3, &Light) -> f64,
 ) -> Option<ShadingTerms> {
     // Step 1: the closest hit, and which object it is on.
     let (object, hit) = world.closest_hit(ray, Interval::FORWARD)?;
@@ -29,10 +27,7 @@ pub fn shade_with(
 /// along `ray`. Chapters 5–6 call it
 /// at every bounce of a recursive ray.
 pub fn shade_hit(
-    world: &World,
-    ray: &Ray,
-    hit: &Hit,
-    object: usize,
+    world: &World, ray: &Ray, hit: &Hit, object: usize,
     visibility: impl Fn(&Hit, DVec3, &Light) -> f64,
 ) -> ShadingTerms {
     let material = world.material_of(object);
@@ -102,9 +97,7 @@ impl Terms {
 /// it hits first. Rows run in parallel; the image is the same for any
 /// number of threads.
 pub fn render(
-    world: &World,
-    terms: Terms,
-    options: &RenderOptions,
+    world: &World, terms: Terms, options: &RenderOptions,
 ) -> Result<Image, RenderError> {
     render_with(world, options, |ray| {
         shade(world, ray).map_or(world.background, |t| terms.pick(&t))
@@ -115,8 +108,7 @@ pub fn render(
 /// The pixel loop of [`render`] with any colour function of the primary
 /// ray (later chapters pass their own tracers).
 pub fn render_with(
-    world: &World,
-    options: &RenderOptions,
+    world: &World, options: &RenderOptions,
     colour: impl Fn(&Ray) -> DVec3 + Sync,
 ) -> Result<Image, RenderError> {
     raystep_render::render(world.width, world.height, options, |column, row| {

@@ -53,10 +53,7 @@ fn world(shapes: &[Spec]) -> World {
 /// the segment's line meets a sphere, or None if it passes by; and
 /// whether it passes within 1e-6 of r of its surface (a graze).
 fn sphere_roots(
-    center: DVec3,
-    radius: f64,
-    from: DVec3,
-    to: DVec3,
+    center: DVec3, radius: f64, from: DVec3, to: DVec3,
 ) -> (Option<[f64; 2]>, bool) {
     let d = to - from;
     let f = from - center;

@@ -12,10 +12,7 @@ use raystep_core::{DVec3, Interval, Ray};
 /// still the light; the interval is [0, 1]: from the origin, which is now
 /// off the surface, up to the light.
 pub fn normal_offset_ray(
-    point: DVec3,
-    normal: DVec3,
-    light_position: DVec3,
-    epsilon: f64,
+    point: DVec3, normal: DVec3, light_position: DVec3, epsilon: f64,
 ) -> (Ray, Interval) {
     // TODO:
     // 1. The origin: `point` moved `epsilon` along `normal` (toward the

@@ -14,11 +14,7 @@ use raystep_scene::Light;
 /// `ch03::shade_with` passes), and `offset` says how the shadow ray keeps
 /// clear of the surface it starts on.
 pub fn shadow(
-    world: &World,
-    hit: &Hit,
-    normal: DVec3,
-    light: &Light,
-    offset: Offset,
+    world: &World, hit: &Hit, normal: DVec3, light: &Light, offset: Offset,
 ) -> f64 {
     // TODO:
     // 1. If the light is behind the surface (normal · (light.position −

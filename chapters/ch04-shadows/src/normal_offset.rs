@@ -10,10 +10,7 @@ use raystep_core::{DVec3, Interval, Ray};
 /// still the light; the interval is [0, 1]: from the origin, which is now
 /// off the surface, up to the light.
 pub fn normal_offset_ray(
-    point: DVec3,
-    normal: DVec3,
-    light_position: DVec3,
-    epsilon: f64,
+    point: DVec3, normal: DVec3, light_position: DVec3, epsilon: f64,
 ) -> (Ray, Interval) {
     // Step 1: lift the origin off the surface, toward the light's side.
     let origin = point + epsilon * normal;

@@ -36,10 +36,7 @@ pub enum Offset {
 /// the direction runs from the moved origin to the light, so the light is
 /// at t = 1. Either way a blocker beyond the light does not count.
 pub fn shadow_ray(
-    point: DVec3,
-    normal: DVec3,
-    light_position: DVec3,
-    offset: Offset,
+    point: DVec3, normal: DVec3, light_position: DVec3, offset: Offset,
 ) -> (Ray, Interval) {
     match offset {
         // Strategy 1: the ray starts on the surface (or a rounding error

@@ -12,11 +12,7 @@ use raystep_scene::Light;
 /// `ch03::shade_with` passes), and `offset` says how the shadow ray keeps
 /// clear of the surface it starts on.
 pub fn shadow(
-    world: &World,
-    hit: &Hit,
-    normal: DVec3,
-    light: &Light,
-    offset: Offset,
+    world: &World, hit: &Hit, normal: DVec3, light: &Light, offset: Offset,
 ) -> f64 {
     // Step 1: a light behind the surface (N·L ≤ 0) is blocked by the
     // surface itself; no ray needed.

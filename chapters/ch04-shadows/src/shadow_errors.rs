@@ -62,10 +62,7 @@ pub enum Verdict {
 /// polygon could not be skipped so lightly in a mesh, where its neighbours
 /// are the same surface.)
 pub fn verdict(
-    world: &World,
-    ray: &Ray,
-    light: DVec3,
-    offset: Offset,
+    world: &World, ray: &Ray, light: DVec3, offset: Offset,
 ) -> Verdict {
     let Some((object, hit)) = world.closest_hit(ray, Interval::FORWARD) else {
         return Verdict::Unjudged;

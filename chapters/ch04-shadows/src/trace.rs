@@ -25,9 +25,7 @@ pub fn trace(world: &World, ray: &Ray, offset: Offset) -> DVec3 {
 /// shadow ray to every light. Rows run in parallel; the image is the same
 /// for any number of threads.
 pub fn render(
-    world: &World,
-    offset: Offset,
-    options: &RenderOptions,
+    world: &World, offset: Offset, options: &RenderOptions,
 ) -> Result<Image, RenderError> {
     render_with(world, options, |ray| trace(world, ray, offset))
 }

@@ -215,8 +215,7 @@ type PerStrategy = Vec<Vec<(usize, usize)>>;
 /// misses the blocker GAP·scale away: a leak). Every scale and case draws
 /// the same random numbers, so the scenes differ only in their scale.
 fn stability(
-    strategies: &[Offset],
-    rays: usize,
+    strategies: &[Offset], rays: usize,
 ) -> Vec<(&'static str, PerStrategy)> {
     let names = ["sphere", "plane", "floor y = 0"];
     let mut out: Vec<_> = names

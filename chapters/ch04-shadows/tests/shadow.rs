@@ -25,10 +25,7 @@ fn light(position: DVec3) -> Light {
 /// Sᵢ with the scale-aware offset (this exercise's code does not depend on
 /// which strategy builds the ray).
 fn si(
-    world: &World,
-    point: DVec3,
-    normal: DVec3,
-    light_position: DVec3,
+    world: &World, point: DVec3, normal: DVec3, light_position: DVec3,
 ) -> f64 {
     let hit = Hit {
         t: 1.0,

@@ -99,9 +99,7 @@ fn material(rng: &mut Rng, kr: DVec3) -> Material {
 /// A world of these shapes (chapter 3's, searched one by one), each with
 /// its material, lit by `lights`.
 fn world(
-    shapes: &[(Spec, Material)],
-    lights: Vec<Light>,
-    ambient: f64,
+    shapes: &[(Spec, Material)], lights: Vec<Light>, ambient: f64,
 ) -> World {
     let objects = shapes
         .iter()

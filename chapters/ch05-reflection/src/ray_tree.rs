@@ -103,11 +103,7 @@ impl RayLog {
 
     /// Notes a shadow ray from a hit at `path`, and whether it was blocked.
     pub fn shadow(
-        &mut self,
-        path: Path,
-        ray: &Ray,
-        t_light: f64,
-        blocked: bool,
+        &mut self, path: Path, ray: &Ray, t_light: f64, blocked: bool,
     ) {
         self.counts.shadow += 1;
         self.keep(path, ray, Some(t_light), true, blocked, None);
@@ -123,13 +119,8 @@ impl RayLog {
     }
 
     fn keep(
-        &mut self,
-        path: Path,
-        ray: &Ray,
-        t: Option<f64>,
-        shadow: bool,
-        blocked: bool,
-        cut: Option<Cut>,
+        &mut self, path: Path, ray: &Ray, t: Option<f64>, shadow: bool,
+        blocked: bool, cut: Option<Cut>,
     ) {
         if let Some(rays) = &mut self.rays {
             rays.push(LoggedRay {

@@ -71,11 +71,7 @@ impl<'a> Tracer<'a> {
     /// `object`, seen along `ray`: chapter 4's shading, with Sᵢ from a
     /// shadow ray that starts off the surface by the scale-aware offset.
     pub fn local_light(
-        &self,
-        ray: &Ray,
-        hit: &Hit,
-        object: usize,
-        path: Path,
+        &self, ray: &Ray, hit: &Hit, object: usize, path: Path,
     ) -> DVec3 {
         let world = self.world;
         let terms = shade_hit(world, ray, hit, object, |hit, normal, light| {
@@ -120,9 +116,7 @@ impl<'a> Tracer<'a> {
 /// `stop`. Returns the image and every ray it took. Rows run in parallel;
 /// image and counts are the same for any number of threads.
 pub fn render(
-    world: &World,
-    stop: &Stop,
-    options: &RenderOptions,
+    world: &World, stop: &Stop, options: &RenderOptions,
 ) -> Result<(Image, RayCounts), RenderError> {
     let total = Mutex::new(RayCounts::default());
     let image = render_with(world, options, |ray| {
@@ -137,9 +131,7 @@ pub fn render(
 
 /// The colour of one primary `ray` under `stop`, and the rays it took.
 pub fn trace_counted(
-    world: &World,
-    ray: &Ray,
-    stop: &Stop,
+    world: &World, ray: &Ray, stop: &Stop,
 ) -> (DVec3, RayCounts) {
     let tracer = Tracer::new(world, *stop);
     let colour = tracer.trace(ray, Path::PRIMARY);
@@ -156,10 +148,7 @@ pub fn ray_tree(world: &World, ray: &Ray, stop: &Stop) -> Vec<LoggedRay> {
 
 /// The ray tree of one pixel (see [`ray_tree`]).
 pub fn pixel_tree(
-    world: &World,
-    column: u32,
-    row: u32,
-    stop: &Stop,
+    world: &World, column: u32, row: u32, stop: &Stop,
 ) -> Vec<LoggedRay> {
     let ray = world
         .camera

@@ -398,10 +398,7 @@ const BETWEEN: Ray = Ray::new(DVec3::ZERO, DVec3::X);
 /// mirrors), so each hit shoots one shadow ray. `what` says which mirrors
 /// and which rule, for the message.
 fn assert_one_chain(
-    what: &str,
-    c: &RayCounts,
-    reflected: u64,
-    cut_by_depth: u64,
+    what: &str, c: &RayCounts, reflected: u64, cut_by_depth: u64,
     cut_by_contribution: u64,
 ) {
     let expected = RayCounts {

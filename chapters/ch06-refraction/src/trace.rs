@@ -95,9 +95,7 @@ impl<'a> Tracer<'a> {
 
     /// A tracer that counts its rays and keeps each one (the ray tree).
     pub fn recording(
-        world: &'a World,
-        stop: Stop,
-        fresnel: Fresnel,
+        world: &'a World, stop: Stop, fresnel: Fresnel,
     ) -> Tracer<'a> {
         Tracer::with(ch05::Tracer::recording(world, stop), fresnel)
     }
@@ -227,10 +225,7 @@ impl<'a> Tracer<'a> {
 /// image and every ray it took; both are the same for any number of
 /// threads.
 pub fn render(
-    world: &World,
-    stop: &Stop,
-    fresnel: Fresnel,
-    options: &RenderOptions,
+    world: &World, stop: &Stop, fresnel: Fresnel, options: &RenderOptions,
 ) -> Result<(Image, RayCounts), RenderError> {
     let total = Mutex::new(RayCounts::default());
     let media = Media::new(CAMERA_MEDIUM);
@@ -246,11 +241,7 @@ pub fn render(
 
 /// The ray tree of one pixel: every ray its trace shot or cut, in order.
 pub fn pixel_tree(
-    world: &World,
-    column: u32,
-    row: u32,
-    stop: &Stop,
-    fresnel: Fresnel,
+    world: &World, column: u32, row: u32, stop: &Stop, fresnel: Fresnel,
 ) -> Vec<LoggedRay> {
     let ray = world
         .camera

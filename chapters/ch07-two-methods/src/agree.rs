@@ -79,9 +79,7 @@ pub fn compare(stage: &Stage, a: &Buffers, b: &Buffers) -> Agreement {
 /// The distance on screen from `p` to the nearest edge of the triangle
 /// (after clipping at the near plane), in pixels.
 pub fn edge_distance(
-    projection: &Projection,
-    corners: &[raystep_core::DVec3; 3],
-    p: DVec2,
+    projection: &Projection, corners: &[raystep_core::DVec3; 3], p: DVec2,
 ) -> f64 {
     let view = clip_near(corners.map(|c| projection.view(c)));
     let screen: Vec<DVec2> =

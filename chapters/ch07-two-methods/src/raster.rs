@@ -100,9 +100,7 @@ pub fn rasterize(stage: &Stage) -> (Buffers, RasterCounts) {
 /// The columns and rows of the pixels whose centres lie in the bounding
 /// box of `screen`, within the image; None if there are none.
 fn pixel_box(
-    screen: &[DVec2; 3],
-    width: u32,
-    height: u32,
+    screen: &[DVec2; 3], width: u32, height: u32,
 ) -> Option<(std::ops::RangeInclusive<u32>, std::ops::RangeInclusive<u32>)> {
     let lo = screen[0].min(screen[1]).min(screen[2]);
     let hi = screen[0].max(screen[1]).max(screen[2]);

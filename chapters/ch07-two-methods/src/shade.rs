@@ -12,11 +12,7 @@ use raystep_render::Rgb;
 /// when it shades a pixel, so it has no shadow rays, and no reflected or
 /// refracted rays either; the ray caster is held to the same rule here.
 pub fn shade_pixel(
-    world: &World,
-    ray: &Ray,
-    t: f64,
-    object: usize,
-    normal: DVec3,
+    world: &World, ray: &Ray, t: f64, object: usize, normal: DVec3,
 ) -> Rgb {
     let hit = Hit {
         t,

@@ -197,9 +197,7 @@ fn coverage_tables() {
 
 /// How many of `triangles` cover each pixel centre of the grid, row by row.
 fn counts(
-    triangles: &[[DVec2; 3]],
-    width: u32,
-    height: u32,
+    triangles: &[[DVec2; 3]], width: u32, height: u32,
 ) -> Vec<Vec<usize>> {
     (0..height)
         .map(|row| {
@@ -249,11 +247,7 @@ fn owner_text(triangles: &[[DVec2; 3]], width: u32, height: u32) -> String {
 /// sides are not, so the centres with lo ≤ x < hi and lo ≤ y < hi: no
 /// gap inside, no double hit anywhere, no hit outside.
 fn assert_tiles_the_square(
-    name: &str,
-    triangles: &[[DVec2; 3]],
-    lo: f64,
-    hi: f64,
-    size: u32,
+    name: &str, triangles: &[[DVec2; 3]], lo: f64, hi: f64, size: u32,
 ) {
     let counts = counts(triangles, size, size);
     let (mut gaps, mut doubles, mut outside) = (0, 0, 0);

@@ -16,10 +16,7 @@ use crate::bvh::enter;
 /// Visit the nodes whose boxes the ray enters, the nearer child first,
 /// and skip every box that begins beyond the closest hit found so far.
 pub fn near_first_closest_hit(
-    bvh: &Bvh,
-    objects: &[Object],
-    ray: &Ray,
-    interval: Interval,
+    bvh: &Bvh, objects: &[Object], ray: &Ray, interval: Interval,
 ) -> Option<(usize, Hit)> {
     // TODO:
     // 1. Test the objects outside the tree, `bvh.unbounded` (planes),

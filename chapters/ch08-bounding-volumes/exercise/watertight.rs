@@ -19,9 +19,7 @@ use crate::Shear;
 /// one triangle that owns the edge (chapter 2's tie rule), and at a shared
 /// vertex for one triangle of its fan: no ray hits twice either.
 pub fn watertight(
-    v: &[DVec3; 3],
-    ray: &Ray,
-    interval: Interval,
+    v: &[DVec3; 3], ray: &Ray, interval: Interval,
 ) -> Option<f64> {
     // Steps 1 and 2: the ray's axes and shear.
     let shear = Shear::of(ray.direction);
@@ -66,8 +64,7 @@ impl Shear {
 /// the ray and its `z` along it). Chapter 8's fast walk shears each ray's
 /// triangles itself (steps 1–3 once per ray) and then asks this.
 pub(crate) fn sheared_hit(
-    sheared: [(DVec2, f64); 3],
-    interval: Interval,
+    sheared: [(DVec2, f64); 3], interval: Interval,
 ) -> Option<f64> {
     // TODO:
     // 4. The edge functions at the origin, with `edge_function`:

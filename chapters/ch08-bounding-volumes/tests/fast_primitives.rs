@@ -71,9 +71,7 @@ struct Analytic {
 }
 
 fn case(
-    shape: impl Primitive + 'static,
-    from: DVec3,
-    direction: DVec3,
+    shape: impl Primitive + 'static, from: DVec3, direction: DVec3,
     expected: Option<(f64, DVec3, DVec3)>,
 ) -> Analytic {
     Analytic {

@@ -124,10 +124,7 @@ fn sphere(center: DVec3, radius: f64) -> Object {
 /// The closest hit along `origin` + t·`direction`, walked near first with
 /// the log emptied before (so that it then holds this walk's tests).
 fn walk(
-    bvh: &Bvh,
-    objects: &[Object],
-    log: &Mutex<Vec<usize>>,
-    origin: DVec3,
+    bvh: &Bvh, objects: &[Object], log: &Mutex<Vec<usize>>, origin: DVec3,
     direction: DVec3,
 ) -> Option<(usize, Hit)> {
     tested(log); // start from an empty log

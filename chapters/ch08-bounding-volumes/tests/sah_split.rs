@@ -40,9 +40,7 @@ fn show(b: &Aabb) -> String {
 #[track_caller]
 fn assert_cost(
     (parent, left, n_left, right, n_right): (&Aabb, &Aabb, usize, &Aabb, usize),
-    tests: f64,
-    tolerance: f64,
-    why: &str,
+    tests: f64, tolerance: f64, why: &str,
 ) {
     for costs in &COSTS {
         let expected = costs.traversal + tests * costs.intersection;

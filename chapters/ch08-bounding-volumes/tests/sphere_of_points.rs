@@ -47,10 +47,7 @@ fn check(name: &str, points: &[DVec3], r_min: f64) -> BoundingSphere {
 
 /// [`check`] with another factor.
 fn check_within(
-    name: &str,
-    points: &[DVec3],
-    r_min: f64,
-    factor: f64,
+    name: &str, points: &[DVec3], r_min: f64, factor: f64,
 ) -> BoundingSphere {
     let s = sphere_of_points(points);
     assert_holds_all(name, points, &s);

@@ -233,10 +233,7 @@ struct Case {
 /// α from the tube's circle toward the parallel, moved by `shift` along
 /// the outward normal. It starts `lead` before the tangent point.
 fn tangent_ray(
-    spec: &Spec,
-    (theta, phi, alpha): (f64, f64, f64),
-    shift: f64,
-    lead: f64,
+    spec: &Spec, (theta, phi, alpha): (f64, f64, f64), shift: f64, lead: f64,
 ) -> Case {
     let (major, minor) = (spec.major, spec.minor);
     let ring = major + minor * theta.cos();

@@ -454,10 +454,7 @@ struct TestMesh {
 
 impl TestMesh {
     fn new(
-        name: &'static str,
-        rotation: DQuat,
-        scale: f64,
-        centre: DVec3,
+        name: &'static str, rotation: DQuat, scale: f64, centre: DVec3,
     ) -> TestMesh {
         let mut mesh = Mesh::icosphere(2);
         for p in &mut mesh.vertices {
@@ -512,8 +509,7 @@ struct Count {
 /// the mesh at its target) from the triangles near its target: `rays`
 /// holds the triangles near a target and the rays aimed at it.
 fn count(
-    triangles: &[Vec<Triangle>; 3],
-    rays: &[(Vec<usize>, Vec<Ray>)],
+    triangles: &[Vec<Triangle>; 3], rays: &[(Vec<usize>, Vec<Ray>)],
 ) -> [Count; 3] {
     let near = Interval::new(1.0 - 1e-6, 1.0 + 1e-6);
     let mut counts: [Count; 3] = Default::default();

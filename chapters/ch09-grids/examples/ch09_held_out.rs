@@ -115,10 +115,7 @@ fn crossings(lattice: &Lattice, ray: &Ray) -> Vec<(f64, usize)> {
 
 /// See [`random_grid`].
 fn clear(
-    lattice: &Lattice,
-    ray: &Ray,
-    interval: Interval,
-    t_scale: f64,
+    lattice: &Lattice, ray: &Ray, interval: Interval, t_scale: f64,
 ) -> bool {
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * t_scale.max(a.abs());
     let b = &lattice.bounds;

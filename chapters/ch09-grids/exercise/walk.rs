@@ -17,9 +17,7 @@ use crate::{Lattice, Visit};
 /// in order along the ray, until `visit` breaks or the ray leaves the
 /// grid.
 pub fn walk(
-    lattice: &Lattice,
-    ray: &Ray,
-    interval: Interval,
+    lattice: &Lattice, ray: &Ray, interval: Interval,
     mut visit: impl FnMut(Visit) -> ControlFlow<()>,
 ) {
     // TODO:

@@ -11,9 +11,7 @@ use crate::{Dda, Lattice};
 /// The DDA's start for `ray` within `interval`, or None if the ray
 /// misses the grid's box there.
 pub fn dda_setup(
-    lattice: &Lattice,
-    ray: &Ray,
-    interval: Interval,
+    lattice: &Lattice, ray: &Ray, interval: Interval,
 ) -> Option<Dda> {
     // Step 1: clip the ray to the grid's box (chapter 8's slab test).
     let inside = slab_test(&lattice.bounds, ray, interval)?;

@@ -87,9 +87,7 @@ impl Grid {
 
     /// The grid over triangles, filled by their boxes or exactly.
     pub fn for_triangles(
-        triangles: &[[DVec3; 3]],
-        resolution: Resolution,
-        fill: Fill,
+        triangles: &[[DVec3; 3]], resolution: Resolution, fill: Fill,
     ) -> Grid {
         let boxes: Vec<Aabb> = triangles
             .iter()
@@ -139,8 +137,7 @@ pub(crate) fn reach(lattice: &Lattice) -> DVec3 {
 /// Builds a grid over `boxes`; `overlaps(object, cell box)` decides, for
 /// each cell of an object's box, whether the object goes in its list.
 fn build(
-    boxes: &[Aabb],
-    resolution: Resolution,
+    boxes: &[Aabb], resolution: Resolution,
     overlaps: impl Fn(u32, &Aabb) -> bool,
 ) -> Grid {
     // Step 1: objects with a finite box go in the grid, the others
@@ -186,10 +183,7 @@ fn split_bounded(boxes: &[Aabb]) -> (Vec<u32>, Vec<u32>) {
 
 /// The cell lists of `inside` on `lattice`: steps 4 and 5 of the build.
 fn fill(
-    boxes: &[Aabb],
-    inside: Vec<u32>,
-    unbounded: Vec<u32>,
-    lattice: Lattice,
+    boxes: &[Aabb], inside: Vec<u32>, unbounded: Vec<u32>, lattice: Lattice,
     overlaps: impl Fn(u32, &Aabb) -> bool,
 ) -> Grid {
     let pad = reach(&lattice);

@@ -32,10 +32,7 @@ impl Grid {
     /// each object as it is tested there (`Some(index)`): the figures draw
     /// the walk from it.
     pub fn closest_hit_observed(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
         observe: &mut dyn FnMut(Visit, Option<u32>),
     ) -> Option<(usize, Hit)> {
         let mut interval = interval;
@@ -80,10 +77,7 @@ impl Grid {
 impl Accelerator for Grid {
     /// The closest hit ([`Grid::closest_hit_observed`], unobserved).
     fn closest_hit(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
     ) -> Option<(usize, Hit)> {
         self.closest_hit_observed(objects, ray, interval, &mut |_, _| {})
     }
@@ -91,10 +85,7 @@ impl Accelerator for Grid {
     /// Does anything meet the ray? Any hit at all ends the walk: a shadow
     /// ray needs no order.
     fn any_hit(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
     ) -> bool {
         let hits = |index: u32| {
             objects[index as usize]

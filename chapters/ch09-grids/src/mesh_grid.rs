@@ -22,9 +22,7 @@ pub struct MeshGrid {
 impl MeshGrid {
     /// The grid over `triangles` at `resolution`, filled by `fill`.
     pub fn new(
-        triangles: &[[DVec3; 3]],
-        resolution: Resolution,
-        fill: Fill,
+        triangles: &[[DVec3; 3]], resolution: Resolution, fill: Fill,
     ) -> MeshGrid {
         MeshGrid {
             grid: Grid::for_triangles(triangles, resolution, fill),
@@ -41,10 +39,7 @@ impl MeshGrid {
     /// tests, in order (to count the tests of a triangle already tested).
     /// Generic, so that the benchmark's no-op recorder costs nothing.
     pub fn closest_recorded(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
         mut tested: impl FnMut(u32),
     ) -> Option<MeshHit> {
         let prepared = PreparedRay::traced(ray)?;
@@ -82,19 +77,13 @@ impl MeshAccelerator for MeshGrid {
     /// The closest hit; `counts` gets the cells visited (as `nodes`) and
     /// the triangle tests.
     fn closest_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         self.closest_recorded(ray, interval, counts, |_| {})
     }
 
     fn any_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> bool {
         let Some(prepared) = PreparedRay::traced(ray) else {
             return false;

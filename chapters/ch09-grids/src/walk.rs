@@ -13,9 +13,7 @@ use crate::{Lattice, Visit, dda_setup};
 /// in order along the ray, until `visit` breaks or the ray leaves the
 /// grid.
 pub fn walk(
-    lattice: &Lattice,
-    ray: &Ray,
-    interval: Interval,
+    lattice: &Lattice, ray: &Ray, interval: Interval,
     mut visit: impl FnMut(Visit) -> ControlFlow<()>,
 ) {
     // Step 1: the setup (exercise 1).

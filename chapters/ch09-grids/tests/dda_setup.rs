@@ -103,8 +103,7 @@ fn three(v: DVec3) -> String {
 
 /// The setup of each of `cases` in `lattice`, one row each.
 fn setup_table_of(
-    lattice: &Lattice,
-    cases: Vec<(&'static str, Ray, Interval)>,
+    lattice: &Lattice, cases: Vec<(&'static str, Ray, Interval)>,
 ) -> String {
     let mut table = Table::new(&[
         "ray", "cell", "step", "t_max", "t_delta", "t_enter", "t_exit",

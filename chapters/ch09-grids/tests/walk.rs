@@ -21,9 +21,7 @@ use raystep_check::seeded;
 /// Why the walk of `ray` cannot be judged: its setup (exercise 1) is
 /// wrong. None if the setup is right.
 fn setup_fails(
-    lattice: &Lattice,
-    ray: &Ray,
-    interval: Interval,
+    lattice: &Lattice, ray: &Ray, interval: Interval,
 ) -> Option<String> {
     let got = dda_setup(lattice, ray, interval);
     let fault = setup_fault(lattice, ray, interval, got.as_ref())?;
@@ -38,9 +36,7 @@ fn setup_fails(
 /// starts from is checked; or why not: a wrong setup, or a walk that goes
 /// on past all the cells a ray can cross (then it is stopped there).
 fn walked(
-    lattice: &Lattice,
-    ray: &Ray,
-    interval: Interval,
+    lattice: &Lattice, ray: &Ray, interval: Interval,
 ) -> Result<Vec<Visit>, String> {
     if let Some(why) = setup_fails(lattice, ray, interval) {
         return Err(why);

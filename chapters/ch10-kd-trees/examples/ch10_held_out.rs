@@ -220,13 +220,8 @@ fn traversal_step_case(rng: &mut Rng, case: &mut Case) {
 
 /// Asks the step and records what it says.
 fn step(
-    case: &mut Case,
-    what: &str,
-    split: Split,
-    origin: f64,
-    direction: f64,
-    t_min: f64,
-    t_max: f64,
+    case: &mut Case, what: &str, split: Split, origin: f64, direction: f64,
+    t_min: f64, t_max: f64,
 ) {
     let inverse = 1.0 / direction;
     case.ask(format!(

@@ -13,10 +13,7 @@ use crate::{Event, event_order};
 
 /// Builds the tree over `objects` in box `node`.
 pub(crate) fn build(
-    input: &Input,
-    objects: &[u32],
-    node: Aabb,
-    out: &mut Output,
+    input: &Input, objects: &[u32], node: Aabb, out: &mut Output,
 ) {
     // Step 1: every object's events, sorted once.
     let events = [0, 1, 2].map(|axis| {
@@ -40,13 +37,8 @@ fn objects_of(events: &[Event]) -> impl Iterator<Item = u32> + '_ {
 }
 
 fn subtree(
-    input: &Input,
-    events: [Vec<Event>; 3],
-    count: usize,
-    node: Aabb,
-    depth: usize,
-    sides: &mut [Side],
-    out: &mut Output,
+    input: &Input, events: [Vec<Event>; 3], count: usize, node: Aabb,
+    depth: usize, sides: &mut [Side], out: &mut Output,
 ) {
     // Step 2: the cheapest plane: one sweep per axis, no sorting.
     let mut best = None;

@@ -10,11 +10,7 @@ use crate::{Event, event_order};
 /// Builds the subtree over `objects` in box `node` at `depth` (the
 /// whole tree: all the objects in the root's box at depth 0).
 pub(crate) fn subtree(
-    input: &Input,
-    objects: &[u32],
-    node: Aabb,
-    depth: usize,
-    out: &mut Output,
+    input: &Input, objects: &[u32], node: Aabb, depth: usize, out: &mut Output,
 ) {
     // Step 1: every object's box in this node.
     let boxes: Vec<Aabb> =

@@ -42,10 +42,7 @@ pub fn event_order(a: &Event, b: &Event) -> Ordering {
 
 /// Object `object`'s events on `axis`, for its box `b` in the node.
 pub fn push_events(
-    events: &mut Vec<Event>,
-    object: u32,
-    b: &Aabb,
-    axis: usize,
+    events: &mut Vec<Event>, object: u32, b: &Aabb, axis: usize,
 ) {
     let (min, max) = (b.min[axis], b.max[axis]);
     if min == max {
@@ -88,11 +85,7 @@ pub struct Plane {
 /// offers every plane strictly inside the node to `best` (the cheapest so
 /// far; ties keep the earlier plane).
 pub fn sweep(
-    events: &[Event],
-    axis: usize,
-    count: usize,
-    node: &Aabb,
-    costs: &KdCosts,
+    events: &[Event], axis: usize, count: usize, node: &Aabb, costs: &KdCosts,
     best: &mut Option<Plane>,
 ) {
     // Step 1: before the first plane, every object is above.
@@ -171,9 +164,7 @@ pub fn side(b: &Aabb, plane: &Plane) -> Side {
 /// from `boxes`, in the same order) to its [`side`] of `plane`, to both
 /// if the plane cuts it.
 pub fn sides(
-    objects: &[u32],
-    boxes: impl IntoIterator<Item = Aabb>,
-    plane: &Plane,
+    objects: &[u32], boxes: impl IntoIterator<Item = Aabb>, plane: &Plane,
 ) -> (Vec<u32>, Vec<u32>) {
     let (mut below, mut above) = (Vec::new(), Vec::new());
     for (&i, b) in objects.iter().zip(boxes) {

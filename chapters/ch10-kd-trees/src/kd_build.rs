@@ -18,9 +18,7 @@ impl KdTree {
 
     /// The tree over triangles; with [`Clip::Triangles`], perfect splits.
     pub fn for_triangles(
-        triangles: &[[DVec3; 3]],
-        builder: KdBuilder,
-        costs: KdCosts,
+        triangles: &[[DVec3; 3]], builder: KdBuilder, costs: KdCosts,
         clip: Clip,
     ) -> KdTree {
         let boxes: Vec<Aabb> = triangles
@@ -35,9 +33,7 @@ impl KdTree {
     ///
     /// [`Shape::bounds`]: raystep_core::Shape::bounds
     pub fn for_objects(
-        objects: &[Object],
-        builder: KdBuilder,
-        costs: KdCosts,
+        objects: &[Object], builder: KdBuilder, costs: KdCosts,
     ) -> KdTree {
         let boxes: Vec<Aabb> =
             objects.iter().map(|o| o.shape.bounds()).collect();
@@ -52,9 +48,7 @@ fn is_bounded(b: &Aabb) -> bool {
 
 /// Sorts out the unbounded objects, then hands the rest to a builder.
 fn build(
-    boxes: &[Aabb],
-    triangles: Option<&[[DVec3; 3]]>,
-    builder: KdBuilder,
+    boxes: &[Aabb], triangles: Option<&[[DVec3; 3]]>, builder: KdBuilder,
     costs: KdCosts,
 ) -> KdTree {
     let (inside, unbounded): (Vec<u32>, Vec<u32>) =

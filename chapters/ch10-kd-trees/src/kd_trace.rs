@@ -15,10 +15,7 @@ impl KdTree {
     /// `observe` is told every node the walk reaches, and each object
     /// tested (with the leaf's visit): the figures draw the walk from it.
     pub fn closest_hit_observed(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
         mut observe: impl FnMut(&KdVisit, Option<u32>),
     ) -> Option<(usize, Hit)> {
         let mut interval = interval;
@@ -61,20 +58,14 @@ impl KdTree {
 impl Accelerator for KdTree {
     /// The closest hit ([`KdTree::closest_hit_observed`], unobserved).
     fn closest_hit(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
     ) -> Option<(usize, Hit)> {
         self.closest_hit_observed(objects, ray, interval, |_, _| {})
     }
 
     /// Does anything meet the ray? The first blocker ends the walk.
     fn any_hit(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
     ) -> bool {
         let hits = |index: u32| {
             objects[index as usize]

@@ -21,9 +21,7 @@ pub struct MeshKd {
 impl MeshKd {
     /// The tree over `triangles`.
     pub fn new(
-        triangles: &[[DVec3; 3]],
-        builder: KdBuilder,
-        costs: KdCosts,
+        triangles: &[[DVec3; 3]], builder: KdBuilder, costs: KdCosts,
         clip: Clip,
     ) -> MeshKd {
         MeshKd {
@@ -42,10 +40,7 @@ impl MeshAccelerator for MeshKd {
     /// The closest hit; `counts` gets the nodes reached and the triangle
     /// tests.
     fn closest_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         let prepared = PreparedRay::traced(ray)?;
         let mut closest = Closest::new(interval);
@@ -70,10 +65,7 @@ impl MeshAccelerator for MeshKd {
 
     /// Is anything hit within `interval`? Stops at the first hit.
     fn any_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> bool {
         let Some(prepared) = PreparedRay::traced(ray) else {
             return false;

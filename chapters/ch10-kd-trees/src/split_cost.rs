@@ -15,11 +15,7 @@ use crate::KdCosts;
 /// child holds nothing (0 otherwise). A node of area 0 (a point, or a
 /// line) gives no ratio: each child counts as certainly passed, P = 1.
 pub fn split_cost(
-    node: &Aabb,
-    axis: usize,
-    plane: f64,
-    n_below: usize,
-    n_above: usize,
+    node: &Aabb, axis: usize, plane: f64, n_below: usize, n_above: usize,
     costs: &KdCosts,
 ) -> f64 {
     // Step 1: the two children's boxes: the node cut at the plane.

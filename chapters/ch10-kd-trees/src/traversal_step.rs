@@ -24,11 +24,7 @@ use crate::{Split, Step};
 /// may move t_plane by an ulp or two, and visiting one child too many is
 /// safe where one too few is not.
 pub fn traversal_step(
-    split: Split,
-    origin: f64,
-    inverse: f64,
-    t_min: f64,
-    t_max: f64,
+    split: Split, origin: f64, inverse: f64, t_min: f64, t_max: f64,
 ) -> Step {
     // Step 1: near is the side the ray comes from.
     let (near, far) = if inverse > 0.0 {

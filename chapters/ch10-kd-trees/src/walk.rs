@@ -33,9 +33,7 @@ pub struct KdVisit<'a> {
 ///
 /// A ray with a NaN or zero direction meets no node.
 pub fn kd_walk<'a>(
-    tree: &'a KdTree,
-    ray: &Ray,
-    interval: Interval,
+    tree: &'a KdTree, ray: &Ray, interval: Interval,
     mut visit: impl FnMut(KdVisit<'a>) -> f64,
 ) {
     let d = ray.direction;

@@ -139,9 +139,7 @@ impl CompressedNode {
 /// (any CPU): each plane decoded, then chapter 8's slab test.
 #[inline(always)]
 pub fn scalar_boxes(
-    node: &CompressedNode,
-    ray: &FastRay,
-    (t_min, t_max): (f32, f32),
+    node: &CompressedNode, ray: &FastRay, (t_min, t_max): (f32, f32),
 ) -> ([f32; 8], u32) {
     let mut near = [t_min; 8];
     let mut mask = 0;

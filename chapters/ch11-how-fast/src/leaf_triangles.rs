@@ -68,10 +68,7 @@ impl LeafTriangles {
     /// `interval`.
     #[inline(always)]
     pub fn test(
-        &self,
-        k: usize,
-        ray: &FastRay,
-        interval: Interval,
+        &self, k: usize, ray: &FastRay, interval: Interval,
     ) -> Option<f64> {
         match self {
             LeafTriangles::Lecture(v) => match &ray.exact {
@@ -157,9 +154,7 @@ impl LeafTriangles {
 /// [`PreparedRay::triangle`] whole.
 #[inline(always)]
 pub fn watertight(
-    v: &[DVec3; 3],
-    ray: &FastRay,
-    interval: Interval,
+    v: &[DVec3; 3], ray: &FastRay, interval: Interval,
 ) -> Option<f64> {
     // Step 1: the corners sheared (chapter 8's steps 1–3).
     let shear = Shear {
@@ -249,12 +244,8 @@ impl Leaves {
     /// hit (or, `any`, the first) as the mesh's triangle.
     #[inline(always)]
     pub fn leaf(
-        &self,
-        (first, count): (u32, u32),
-        ray: &FastRay,
-        interval: &mut Interval,
-        any: bool,
-        counts: &mut TraceCounts,
+        &self, (first, count): (u32, u32), ray: &FastRay,
+        interval: &mut Interval, any: bool, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         let mut closest = None;
         for j in first as usize..(first + count) as usize {
@@ -290,10 +281,7 @@ impl Outside {
     /// `any`, the first), counted.
     #[inline(always)]
     pub fn closest(
-        &self,
-        ray: &FastRay,
-        interval: &mut Interval,
-        any: bool,
+        &self, ray: &FastRay, interval: &mut Interval, any: bool,
         counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         let mut closest = None;

@@ -140,10 +140,7 @@ const PLACEHOLDER: BvhNode = BvhNode {
 /// Splits `items` (whose centroids' box is `centroids`) in two, the
 /// halves on two threads, down to the parts.
 fn split_top(
-    items: &mut [Item],
-    centroids: Box32,
-    plan: &Plan,
-    depth: usize,
+    items: &mut [Item], centroids: Box32, plan: &Plan, depth: usize,
 ) -> Top {
     if items.len() <= plan.part || depth == MAX_TOP_DEPTH {
         return part(items, plan);
@@ -216,8 +213,7 @@ fn stitch(top: Top, slot: usize, tree: &mut Bvh) {
 /// `f` on each chunk of `items`, on the pool's threads; the answers in
 /// chunk order (so that merging them never depends on the threads).
 fn in_chunks<T: Send>(
-    items: &[Item],
-    f: impl Fn(&[Item]) -> T + Sync + Send,
+    items: &[Item], f: impl Fn(&[Item]) -> T + Sync + Send,
 ) -> Vec<T> {
     items.par_chunks(CHUNK).map(f).collect()
 }
@@ -370,9 +366,7 @@ impl Slices {
 /// reordered, how many go left, and the two sides' centroids' boxes.
 /// None if no cut leaves objects on both sides.
 fn split(
-    items: &mut [Item],
-    c: &Box32,
-    count: usize,
+    items: &mut [Item], c: &Box32, count: usize,
 ) -> Option<(usize, [Box32; 2])> {
     let count = count.min(items.len()).max(2);
     let extent = c.max - c.min;

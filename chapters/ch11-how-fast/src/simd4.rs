@@ -15,9 +15,7 @@ use crate::wide::WideNode;
 /// leaves it unchanged, as `f32::max` does.
 #[inline(always)]
 pub fn boxes4(
-    node: &WideNode<4>,
-    ray: &FastRay,
-    (t_min, t_max): (f32, f32),
+    node: &WideNode<4>, ray: &FastRay, (t_min, t_max): (f32, f32),
 ) -> ([f32; 4], u32) {
     // SAFETY: SSE2 is part of every x86-64 CPU (the intrinsics are
     // `unsafe` only because they need it); each load reads the four f32s

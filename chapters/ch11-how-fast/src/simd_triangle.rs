@@ -62,9 +62,7 @@ impl TriangleLanes {
 /// `t` within `interval`.
 #[inline(always)]
 pub fn watertight_lanes(
-    triangle: &TriangleLanes,
-    ray: &FastRay,
-    interval: Interval,
+    triangle: &TriangleLanes, ray: &FastRay, interval: Interval,
 ) -> Option<f64> {
     // SAFETY: a TriangleLanes is made only where the CPU has AVX2
     // (`TriangleLanes::new`).
@@ -79,9 +77,7 @@ pub fn watertight_lanes(
 /// The CPU must have AVX2 ([`available`]).
 #[inline(always)]
 unsafe fn watertight4(
-    triangle: &TriangleLanes,
-    ray: &FastRay,
-    interval: Interval,
+    triangle: &TriangleLanes, ray: &FastRay, interval: Interval,
 ) -> Option<f64> {
     // SAFETY: the caller has checked AVX2; each load reads one aligned
     // [f32; 4] row, each store writes four f64s into a [f64; 4].

@@ -195,9 +195,7 @@ impl FastBvh {
     /// `step`'s structure from a tree already built (and, for step 4b,
     /// already rotated).
     pub fn from_tree(
-        triangles: &[[DVec3; 3]],
-        tree: &Bvh,
-        step: Step,
+        triangles: &[[DVec3; 3]], tree: &Bvh, step: Step,
     ) -> FastBvh {
         let single = step != Step::Ordered;
         let built = match step {
@@ -314,10 +312,7 @@ impl FastBvh {
     /// counted (`nodes`: nodes reached; a wide node counts once for its
     /// `W` boxes): the structure's walk with its kernel.
     fn trace<const ANY: bool>(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         match &self.built {
             Built::Binary(b) => b.trace::<ANY>(ray, interval, counts),
@@ -364,20 +359,14 @@ impl MeshAccelerator for FastBvh {
     /// The closest hit within `interval`, counted (`nodes`: nodes
     /// reached; a wide node counts once for its `W` boxes).
     fn closest_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         self.trace::<false>(ray, interval, counts)
     }
 
     /// Does anything meet the ray within `interval`?
     fn any_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> bool {
         self.trace::<true>(ray, interval, counts).is_some()
     }

@@ -126,10 +126,7 @@ impl<const W: usize, N: Links> Wide<W, N> {
     /// (compiled with its CPU features) gets a walk of its own.
     #[inline(always)]
     pub(crate) fn walk(
-        &self,
-        ray: &FastRay,
-        interval: Interval,
-        any: bool,
+        &self, ray: &FastRay, interval: Interval, any: bool,
         counts: &mut TraceCounts,
         boxes: impl Fn(&N, &FastRay, (f32, f32)) -> ([f32; W], u32),
     ) -> Option<MeshHit> {
@@ -221,10 +218,7 @@ impl<const W: usize, N: Links> Wide<W, N> {
     /// `boxes` (see [`Wide::walk`]).
     #[inline(always)]
     pub(crate) fn trace<const ANY: bool>(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
         boxes: impl Fn(&N, &FastRay, (f32, f32)) -> ([f32; W], u32),
     ) -> Option<MeshHit> {
         let ray = self.leaves.ray(ray)?;
@@ -235,9 +229,7 @@ impl<const W: usize, N: Links> Wide<W, N> {
 /// Collapses the binary node `k` (interior) into a wide node appended to
 /// `nodes`, and its interior children after it; returns its index.
 fn collapse<const W: usize>(
-    tree: &Bvh,
-    k: usize,
-    nodes: &mut Vec<WideNode<W>>,
+    tree: &Bvh, k: usize, nodes: &mut Vec<WideNode<W>>,
 ) -> u32 {
     // Step 1: open the largest interior child until W children.
     let first = tree.nodes[k].first as usize;
@@ -287,9 +279,7 @@ fn collapse<const W: usize>(
 /// CPU, and the reference the SIMD kernels must match bit for bit.
 #[inline(always)]
 pub fn scalar_boxes<const W: usize>(
-    node: &WideNode<W>,
-    ray: &FastRay,
-    (t_min, t_max): (f32, f32),
+    node: &WideNode<W>, ray: &FastRay, (t_min, t_max): (f32, f32),
 ) -> ([f32; W], u32) {
     let mut near = [t_min; W];
     let mut mask = 0;

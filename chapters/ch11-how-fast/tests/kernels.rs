@@ -12,10 +12,7 @@ use raystep_core::glam::Vec3;
 /// A random node of `W` boxes around `centre`, about `size` wide; slot
 /// `empty` (if any) left empty.
 fn node<const W: usize>(
-    random: &mut SplitMix64,
-    centre: f32,
-    size: f32,
-    empty: Option<usize>,
+    random: &mut SplitMix64, centre: f32, size: f32, empty: Option<usize>,
 ) -> WideNode<W> {
     let mut node = WideNode {
         lo: [[f32::INFINITY; W]; 3],
@@ -40,10 +37,7 @@ fn node<const W: usize>(
 /// A random ray near the node: some directions with zero (±0)
 /// components, some origins exactly on a box's plane.
 fn ray<const W: usize>(
-    random: &mut SplitMix64,
-    node: &WideNode<W>,
-    centre: f32,
-    size: f32,
+    random: &mut SplitMix64, node: &WideNode<W>, centre: f32, size: f32,
 ) -> Ray32 {
     let mut origin = Vec3::from_array(
         [0; 3].map(|_| centre + 2.0 * size * (random.next_f64() as f32 - 0.5)),
@@ -256,9 +250,7 @@ fn the_inlined_test_is_chapter_8s_bit_for_bit() {
 /// (asserted); false where the CPU has no AVX2 (not compared).
 #[cfg(target_arch = "x86_64")]
 fn three_edges_at_once(
-    v: &[raystep_core::DVec3; 3],
-    ray: &FastRay,
-    theirs: Option<f64>,
+    v: &[raystep_core::DVec3; 3], ray: &FastRay, theirs: Option<f64>,
     case: usize,
 ) -> bool {
     use ch11::simd_triangle::{TriangleLanes, watertight_lanes};
@@ -279,10 +271,7 @@ fn three_edges_at_once(
 
 #[cfg(not(target_arch = "x86_64"))]
 fn three_edges_at_once(
-    _: &[raystep_core::DVec3; 3],
-    _: &FastRay,
-    _: Option<f64>,
-    _: usize,
+    _: &[raystep_core::DVec3; 3], _: &FastRay, _: Option<f64>, _: usize,
 ) -> bool {
     false
 }

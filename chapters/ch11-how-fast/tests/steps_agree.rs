@@ -20,10 +20,7 @@ use raystep_core::glam::Vec3;
 /// brute force's `truth` about `rays`, with its SIMD kernel (where the
 /// CPU has it) and with the scalar fallback.
 fn disagreements(
-    triangles: &[[DVec3; 3]],
-    step: Step,
-    rays: &[Ray32],
-    truth: &Truth,
+    triangles: &[[DVec3; 3]], step: Step, rays: &[Ray32], truth: &Truth,
 ) -> (usize, usize) {
     let simd = FastBvh::build(triangles, step);
     let scalar = simd.clone().scalar();

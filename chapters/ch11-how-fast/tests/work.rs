@@ -17,8 +17,7 @@ use raystep_core::Aabb;
 
 /// Nodes reached and triangle tests per ray, over `rays`.
 fn per_ray(
-    rays: &[Ray32],
-    mut trace: impl FnMut(&Ray32, &mut TraceCounts),
+    rays: &[Ray32], mut trace: impl FnMut(&Ray32, &mut TraceCounts),
 ) -> (f64, f64) {
     let mut counts = TraceCounts::default();
     for ray in rays {

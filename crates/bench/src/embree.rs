@@ -158,8 +158,7 @@ fn describe(error: &libloading::Error) -> String {
 /// # Safety
 /// `T` must be the function's type.
 unsafe fn function<T: Copy>(
-    library: &Library,
-    name: &CStr,
+    library: &Library, name: &CStr,
 ) -> Result<T, String> {
     // SAFETY: the caller's promise.
     unsafe { library.get::<T>(name) }
@@ -348,9 +347,7 @@ impl Scene {
     /// Builds the scene of `mesh` on `device`, committed; with Embree's
     /// robust flag if `robust`.
     fn new(
-        device: Device,
-        mesh: &IndexedMesh,
-        robust: bool,
+        device: Device, mesh: &IndexedMesh, robust: bool,
     ) -> Result<Scene, String> {
         let api = device.api;
         // SAFETY: a live device.
@@ -422,11 +419,7 @@ impl Scene {
 
     /// Gives `geometry` a new buffer (slot 0) holding `items`.
     fn buffer<T: Copy>(
-        &self,
-        geometry: RawGeometry,
-        kind: u32,
-        format: u32,
-        items: &[T],
+        &self, geometry: RawGeometry, kind: u32, format: u32, items: &[T],
     ) -> Result<(), String> {
         // SAFETY: a live geometry; the stride is the item's size, a
         // multiple of 4 as Embree asks.
@@ -482,10 +475,7 @@ impl Drop for Scene {
 /// Embree counts nothing: the counts are left as they are.
 impl MeshAccelerator for Scene {
     fn closest_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        _counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, _counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         if !ray.is_valid() {
             return None;
@@ -515,10 +505,7 @@ impl MeshAccelerator for Scene {
     }
 
     fn any_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        _counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, _counts: &mut TraceCounts,
     ) -> bool {
         if !ray.is_valid() {
             return false;

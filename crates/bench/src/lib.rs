@@ -137,8 +137,7 @@ pub fn hit_bytes(answers: &[Answer]) -> Vec<u8> {
 /// Runs `work` on a pool of `threads` threads (the tracing inside runs
 /// on it): measurements that must be single-threaded use 1.
 pub fn on_threads<T: Send>(
-    threads: usize,
-    work: impl FnOnce() -> T + Send,
+    threads: usize, work: impl FnOnce() -> T + Send,
 ) -> Result<T, BenchError> {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads.max(1))
@@ -154,8 +153,7 @@ pub fn on_threads<T: Send>(
 /// this thread calls `step` each time `work` calls the tick it is given:
 /// a measurement's progress bar, which need not be sendable.
 pub fn on_threads_with_steps<T: Send>(
-    threads: usize,
-    work: impl FnOnce(&mut dyn FnMut()) -> T + Send,
+    threads: usize, work: impl FnOnce(&mut dyn FnMut()) -> T + Send,
     step: &mut dyn FnMut(),
 ) -> Result<T, BenchError> {
     let (ticks, ticked) = std::sync::mpsc::channel::<()>();

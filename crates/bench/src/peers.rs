@@ -88,9 +88,7 @@ fn obvhs_ray(ray: &Ray32, interval: Interval) -> obvhs::ray::Ray {
 
 /// Our triangle test as a peer's closure wants it: `t`, or +∞ for none.
 fn test(
-    prepared: &PreparedRay,
-    v: &[DVec3; 3],
-    interval: Interval,
+    prepared: &PreparedRay, v: &[DVec3; 3], interval: Interval,
     counts: &mut TraceCounts,
 ) -> f32 {
     counts.triangles += 1;
@@ -107,9 +105,7 @@ macro_rules! obvhs_tracer {
     ($type:ty) => {
         impl MeshAccelerator for $type {
             fn closest_hit(
-                &self,
-                ray: &Ray32,
-                interval: Interval,
+                &self, ray: &Ray32, interval: Interval,
                 counts: &mut TraceCounts,
             ) -> Option<MeshHit> {
                 let prepared = PreparedRay::traced(ray)?;
@@ -130,9 +126,7 @@ macro_rules! obvhs_tracer {
             }
 
             fn any_hit(
-                &self,
-                ray: &Ray32,
-                interval: Interval,
+                &self, ray: &Ray32, interval: Interval,
                 counts: &mut TraceCounts,
             ) -> bool {
                 let Some(prepared) = PreparedRay::traced(ray) else {
@@ -196,8 +190,7 @@ struct BvhCrate(bvh::bvh::Bvh<f32, 3>, Vec<Shape>, Vec<[DVec3; 3]>);
 impl BvhCrate {
     /// The crate's iterator of every triangle whose box the ray meets.
     fn candidates<'a>(
-        &'a self,
-        ray: &'a bvh::ray::Ray<f32, 3>,
+        &'a self, ray: &'a bvh::ray::Ray<f32, 3>,
     ) -> impl Iterator<Item = &'a Shape> + 'a {
         self.0.traverse_iterator(ray, &self.1)
     }
@@ -212,10 +205,7 @@ fn bvh_ray(ray: &Ray32) -> bvh::ray::Ray<f32, 3> {
 
 impl MeshAccelerator for BvhCrate {
     fn closest_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         let prepared = PreparedRay::traced(ray)?;
         let mut closest = Closest::new(interval);
@@ -227,10 +217,7 @@ impl MeshAccelerator for BvhCrate {
     }
 
     fn any_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> bool {
         let Some(prepared) = PreparedRay::traced(ray) else {
             return false;

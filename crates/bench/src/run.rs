@@ -24,8 +24,7 @@ pub const MISS: Answer = (f32::INFINITY, u32::MAX);
 /// Traces `set` with `tracer` on the current thread pool, in chunks; the
 /// answers in the set's order, and the work counted.
 pub fn trace(
-    tracer: &dyn MeshAccelerator,
-    set: &RaySet,
+    tracer: &dyn MeshAccelerator, set: &RaySet,
 ) -> (Vec<Answer>, TraceCounts) {
     let range = interval(set.question);
     let chunks: Vec<(Vec<Answer>, TraceCounts)> = set
@@ -52,11 +51,8 @@ pub fn trace(
 }
 
 fn answer(
-    tracer: &dyn MeshAccelerator,
-    question: Question,
-    ray: &Ray32,
-    range: raystep_core::Interval,
-    counts: &mut TraceCounts,
+    tracer: &dyn MeshAccelerator, question: Question, ray: &Ray32,
+    range: raystep_core::Interval, counts: &mut TraceCounts,
 ) -> Answer {
     match question {
         Question::Closest => tracer
@@ -132,12 +128,8 @@ pub fn median(values: &mut [f64]) -> f64 {
 /// answers of the first method on the first set are returned for the hit
 /// file. `step` is called after each round.
 pub fn compare(
-    triangles: &[[DVec3; 3]],
-    sets: &[RaySet],
-    methods: &[Method],
-    rounds: usize,
-    progress: &ProgressBar,
-    step: &mut dyn FnMut(),
+    triangles: &[[DVec3; 3]], sets: &[RaySet], methods: &[Method],
+    rounds: usize, progress: &ProgressBar, step: &mut dyn FnMut(),
 ) -> (Vec<MethodReport>, Vec<Answer>) {
     let mut reports: Vec<MethodReport> =
         methods.iter().map(|m| MethodReport::new(m, sets)).collect();
@@ -200,12 +192,8 @@ pub fn compare(
 /// least the set's size) against brute force: how many were checked, and
 /// how many of the reference answers differ (beyond `tolerance`, if any).
 pub fn check_brute_force(
-    triangles: &[[DVec3; 3]],
-    sets: &[RaySet],
-    reference: &dyn MeshAccelerator,
-    tolerance: Option<f32>,
-    count: usize,
-    progress: &ProgressBar,
+    triangles: &[[DVec3; 3]], sets: &[RaySet], reference: &dyn MeshAccelerator,
+    tolerance: Option<f32>, count: usize, progress: &ProgressBar,
 ) -> Vec<(usize, usize)> {
     let brute = MeshBruteForce(triangles);
     sets.iter()

@@ -148,9 +148,7 @@ fn expand(dir: &Path, line: &str) -> Result<String, String> {
 /// If `lines` start with a fenced block holding just one include of an
 /// exercise's region: the stub's listing and the reference folded below it.
 fn exercise_listing(
-    dir: &Path,
-    lines: &[&str],
-    marker: &str,
+    dir: &Path, lines: &[&str], marker: &str,
 ) -> Option<Result<String, String>> {
     let [open, body, close, ..] = lines else {
         return None;
@@ -171,10 +169,7 @@ fn exercise_listing(
 
 /// The stub's region in the open, the reference's in a solution fold.
 fn fold(
-    dir: &Path,
-    open: &str,
-    marker: &str,
-    directive: &include::Include,
+    dir: &Path, open: &str, marker: &str, directive: &include::Include,
     stub: &Path,
 ) -> Result<String, String> {
     let named = |message: String| {

@@ -58,9 +58,7 @@ impl Exercise {
     /// The held-out cases of exercise `name`: `run` draws and answers
     /// one, answers agree within `tolerance`.
     pub const fn new(
-        name: &'static str,
-        run: fn(&mut Rng, &mut Case),
-        tolerance: f64,
+        name: &'static str, run: fn(&mut Rng, &mut Case), tolerance: f64,
     ) -> Exercise {
         Exercise {
             name,
@@ -337,9 +335,7 @@ fn agree(expected: &[String], got: &[String], tolerance: f64) -> bool {
 /// (from its last word before the first difference, `c 9.25e23`) as
 /// expected and as got; the whole answers if their shapes differ.
 fn difference(
-    expected: &[String],
-    got: &[String],
-    tolerance: f64,
+    expected: &[String], got: &[String], tolerance: f64,
 ) -> (String, String) {
     let is_word = |w: &String| w.parse::<f64>().is_err();
     let first = expected
@@ -371,9 +367,7 @@ fn shown(words: &[String]) -> String {
 /// Judges the `answers` (lines `answer <exercise> <case> …`, other lines
 /// ignored) against the reference's, for every exercise.
 pub fn judge(
-    exercises: &[Exercise],
-    seed: u64,
-    answers: &str,
+    exercises: &[Exercise], seed: u64, answers: &str,
 ) -> Vec<(String, Verdict)> {
     let mut given: BTreeMap<(&str, usize), Outcome> = BTreeMap::new();
     for line in answers.lines() {

@@ -108,9 +108,7 @@ fn bless_requested() -> bool {
 /// control. **A blessed image is only as right as the code that rendered
 /// it: open it and look at it before committing it.**
 pub fn assert_image_matches(
-    actual: &Image,
-    expected_png: &Path,
-    tolerance: Tolerance,
+    actual: &Image, expected_png: &Path, tolerance: Tolerance,
 ) {
     if let Err(message) = compare(
         actual,
@@ -142,10 +140,7 @@ enum Outcome {
 /// passed in (so the tests do not depend on the environment); `Err` holds
 /// the panic message.
 fn compare(
-    actual: &Image,
-    expected_png: &Path,
-    tolerance: Tolerance,
-    bless: bool,
+    actual: &Image, expected_png: &Path, tolerance: Tolerance, bless: bool,
     diff_dir: &Path,
 ) -> Result<(), String> {
     let expected = match expected_png.try_exists() {
@@ -343,9 +338,7 @@ fn diff_image(actual: &Image, expected: &Image, per_channel: u8) -> Image {
 /// `dir`, each if given; returns "written to A, B and C" (or what went
 /// wrong) for the panic message.
 fn write_files(
-    dir: &Path,
-    actual: (&Path, &Image),
-    expected_copy: Option<(&Path, &Path)>,
+    dir: &Path, actual: (&Path, &Image), expected_copy: Option<(&Path, &Path)>,
     diff: Option<(&Path, &Image)>,
 ) -> String {
     if let Err(e) = fs::create_dir_all(dir) {

@@ -28,10 +28,7 @@ impl Camera {
     /// `up` need not be perpendicular to the view direction, only not
     /// parallel to it.
     pub fn look_at(
-        look_from: DVec3,
-        look_at: DVec3,
-        up: DVec3,
-        vfov_degrees: f64,
+        look_from: DVec3, look_at: DVec3, up: DVec3, vfov_degrees: f64,
         aspect: f64,
     ) -> Camera {
         let forward = (look_at - look_from).normalize();
@@ -61,11 +58,7 @@ impl Camera {
     /// The ray through the centre of pixel `(column, row)` of a
     /// `width × height` image, rows counted from the top.
     pub fn pixel_ray(
-        &self,
-        column: u32,
-        row: u32,
-        width: u32,
-        height: u32,
+        &self, column: u32, row: u32, width: u32, height: u32,
     ) -> Ray {
         let u = (f64::from(column) + 0.5) / f64::from(width);
         let v = (f64::from(row) + 0.5) / f64::from(height);
@@ -75,9 +68,7 @@ impl Camera {
     /// [`pixel_ray`](Camera::pixel_ray) of every pixel of a `width ×
     /// height` image, row by row from the top: `(column, row, ray)`.
     pub fn pixel_rays(
-        &self,
-        width: u32,
-        height: u32,
+        &self, width: u32, height: u32,
     ) -> impl Iterator<Item = (u32, u32, Ray)> {
         let camera = *self;
         (0..height).flat_map(move |row| {

@@ -50,8 +50,7 @@ pub type Renderer =
 /// searched as `accelerate` says, drawn by `draw`; an error becomes its
 /// one line.
 pub fn render_world<E: Display, F: Display>(
-    world: Result<World, E>,
-    accelerate: Accelerate,
+    world: Result<World, E>, accelerate: Accelerate,
     draw: impl FnOnce(&World) -> Result<Image, F>,
 ) -> Result<Image, String> {
     let world = world.map_err(|e| e.to_string())?.accelerated(accelerate);
@@ -91,9 +90,7 @@ impl Measurement {
     /// The run `what` writing `file`, with its `steps` and its `run` (see
     /// the fields, and [`measurement!`] for a run that measures rows).
     pub const fn new(
-        what: &'static str,
-        file: &'static str,
-        steps: fn(usize) -> u64,
+        what: &'static str, file: &'static str, steps: fn(usize) -> u64,
         run: fn(usize, &mut dyn FnMut()) -> Result<String, String>,
     ) -> Measurement {
         Measurement {
@@ -111,8 +108,7 @@ impl Chapter {
     /// draws, charts, measures and renders nothing until the methods
     /// below say what it does.
     pub const fn new(
-        package: &'static str,
-        title: &'static str,
+        package: &'static str, title: &'static str,
         exercises: &'static [&'static str],
     ) -> Chapter {
         let (id, _) = package.split_at(4);
@@ -135,16 +131,14 @@ impl Chapter {
 
     /// The same chapter drawing `charts`.
     pub const fn charts(
-        self,
-        charts: &'static [fn() -> Result<Figure, ChartError>],
+        self, charts: &'static [fn() -> Result<Figure, ChartError>],
     ) -> Chapter {
         Chapter { charts, ..self }
     }
 
     /// The same chapter measuring `measurements`.
     pub const fn measurements(
-        self,
-        measurements: &'static [Measurement],
+        self, measurements: &'static [Measurement],
     ) -> Chapter {
         Chapter {
             measurements,

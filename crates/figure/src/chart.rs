@@ -35,10 +35,7 @@ pub type ChartError = Box<dyn std::error::Error>;
 /// `ChartBuilder::on(area)` chart. Errors from plotters come back as the
 /// message of the returned error.
 pub fn chart(
-    name: &str,
-    caption: &str,
-    width: u32,
-    height: u32,
+    name: &str, caption: &str, width: u32, height: u32,
     draw: impl FnOnce(&ChartArea) -> Result<(), ChartError>,
 ) -> Result<Figure, ChartError> {
     let mut svg = String::new();

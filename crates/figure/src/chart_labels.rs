@@ -102,11 +102,7 @@ impl Labels {
     /// (for `Text::new(text, offset, style.pos(anchor))`), or `None` if no
     /// spot is clear.
     pub fn place(
-        &mut self,
-        at: (i32, i32),
-        text: &str,
-        size: f64,
-        spots: &[Spot],
+        &mut self, at: (i32, i32), text: &str, size: f64, spots: &[Spot],
     ) -> Option<((i32, i32), Pos)> {
         let (width, height) = (text_width(text, size), size);
         for spot in spots {

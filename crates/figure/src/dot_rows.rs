@@ -32,11 +32,7 @@ impl DotRows<'_> {
     /// it says so (none where it gives none or a value that is not
     /// positive).
     pub fn panel(
-        &self,
-        panel: &ChartArea,
-        desc: &str,
-        x: Range<f64>,
-        names: bool,
+        &self, panel: &ChartArea, desc: &str, x: Range<f64>, names: bool,
         value: &dyn Fn(usize, usize) -> Option<(f64, bool)>,
     ) -> Result<(), ChartError> {
         let n = self.names.len() as f64;

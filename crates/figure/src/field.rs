@@ -33,9 +33,7 @@ fn field_color(f: f64, f_scale: f64) -> Option<Color> {
 /// One row of cells as `<rect>`s, merging runs of equal colour. `cells` gives each cell's left
 /// edge, right edge and colour, left to right.
 fn row_rects(
-    out: &mut String,
-    y: f64,
-    h: f64,
+    out: &mut String, y: f64, h: f64,
     cells: impl Iterator<Item = (f64, f64, Option<Color>)>,
 ) {
     let mut run: Option<(f64, f64, Color)> = None;
@@ -75,10 +73,7 @@ impl Page {
     /// size read at a glance. `f` is sampled at the centre of square cells of `cell_px` page px.
     /// The zero contour is not drawn: draw the line or curve on top.
     pub fn scalar_field(
-        &mut self,
-        f: impl Fn(DVec2) -> f64,
-        f_scale: f64,
-        cell_px: f64,
+        &mut self, f: impl Fn(DVec2) -> f64, f_scale: f64, cell_px: f64,
     ) {
         if !(cell_px.is_finite() && cell_px >= 0.5) {
             return;
@@ -105,11 +100,7 @@ impl Page {
     /// A small raster image shown pixelated: `width × height` pixels filling the world
     /// rectangle [`min`, `max`], pixel (0, 0) at the top-left, `pixel(x, y)` giving each colour.
     pub fn raster(
-        &mut self,
-        min: DVec2,
-        max: DVec2,
-        width: u32,
-        height: u32,
+        &mut self, min: DVec2, max: DVec2, width: u32, height: u32,
         pixel: impl Fn(u32, u32) -> Color,
     ) {
         let (a, b) = (

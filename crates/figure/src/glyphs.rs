@@ -60,10 +60,7 @@ impl Page {
 
     /// The axis-aligned rectangle from `min` to `max`.
     pub fn rect(
-        &mut self,
-        min: DVec2,
-        max: DVec2,
-        fill: Option<Color>,
+        &mut self, min: DVec2, max: DVec2, fill: Option<Color>,
         stroke: Option<&Stroke>,
     ) {
         self.polygon(
@@ -76,10 +73,7 @@ impl Page {
     /// Lines of text, each in its own colour, left-aligned at `top_left`
     /// and `step` world units apart, `size_px` high.
     pub fn text_lines(
-        &mut self,
-        top_left: DVec2,
-        step: f64,
-        size_px: f64,
+        &mut self, top_left: DVec2, step: f64, size_px: f64,
         lines: &[(&str, Color)],
     ) {
         for (k, (text, color)) in lines.iter().enumerate() {

@@ -42,12 +42,7 @@ impl Page {
     /// # Panics
     /// If `rgb8` does not hold exactly `width · height · 3` bytes.
     pub fn image(
-        &mut self,
-        min: DVec2,
-        max: DVec2,
-        width: u32,
-        height: u32,
-        rgb8: &[u8],
+        &mut self, min: DVec2, max: DVec2, width: u32, height: u32, rgb8: &[u8],
     ) {
         let expected = u64::from(width) * u64::from(height) * 3;
         assert_eq!(

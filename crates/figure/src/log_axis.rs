@@ -227,10 +227,7 @@ impl<'a> PointCollection<'a, (f64, f64)> for &'a AxisBreak {
 
 impl<DB: DrawingBackend> Drawable<DB> for AxisBreak {
     fn draw<I: Iterator<Item = BackendCoord>>(
-        &self,
-        mut points: I,
-        backend: &mut DB,
-        _: (u32, u32),
+        &self, mut points: I, backend: &mut DB, _: (u32, u32),
     ) -> Result<(), DrawingErrorKind<DB::ErrorType>> {
         let Some((x, y)) = points.next() else {
             return Ok(());

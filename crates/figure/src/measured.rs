@@ -18,8 +18,7 @@ pub fn book_figures() -> PathBuf {
 /// The rows of the measured CSV file `file` of chapter `chapter`, as the
 /// repository keeps it; an error names the file and says how to make it.
 pub fn measured<R: Row>(
-    chapter: &str,
-    file: &str,
+    chapter: &str, file: &str,
 ) -> Result<Vec<R>, ChartError> {
     let text = measured_text(chapter, file)?;
     let path = book_figures().join(chapter).join(file);
@@ -69,8 +68,7 @@ pub fn csv_text(rows: impl MeasuredRows) -> Result<String, String> {
 /// committed format; an error names the file and the first line that
 /// differs.
 pub fn writes_back<R: Row>(
-    chapter: &str,
-    file: &str,
+    chapter: &str, file: &str,
 ) -> Result<(), ChartError> {
     let text = measured_text(chapter, file)?;
     let written = to_csv(&measured::<R>(chapter, file)?);

@@ -286,9 +286,7 @@ fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), FigureError> {
 /// Each file goes to a temporary file in `dir` first and is then renamed into place, so an
 /// interrupted run never leaves a half-written file. Returns the paths written, in figure order.
 pub fn write_all(
-    figures: &[Figure],
-    dir: &Path,
-    format: Format,
+    figures: &[Figure], dir: &Path, format: Format,
 ) -> Result<Vec<PathBuf>, FigureError> {
     check_names(figures)?;
     fs::create_dir_all(dir).map_err(|source| FigureError::CreateDir {
@@ -313,9 +311,7 @@ pub fn write_all(
 /// file: a file in `dir` with an extension of `format` (`.svg` and/or `.png`) that no figure
 /// produces (sorted by name). A missing `dir` makes every file missing.
 pub fn check_all(
-    figures: &[Figure],
-    dir: &Path,
-    format: Format,
+    figures: &[Figure], dir: &Path, format: Format,
 ) -> Result<Vec<Mismatch>, FigureError> {
     check_names(figures)?;
     let mut mismatches = Vec::new();

@@ -251,11 +251,7 @@ impl Page {
     /// A right-angle mark at `corner` between the unit directions `u` and `v`: a thin square
     /// corner `size` world units on a side.
     pub fn right_angle(
-        &mut self,
-        corner: DVec2,
-        u: DVec2,
-        v: DVec2,
-        size: f64,
+        &mut self, corner: DVec2, u: DVec2, v: DVec2, size: f64,
     ) {
         let mark = [
             corner + size * u,
@@ -320,10 +316,7 @@ impl Page {
 
     /// A circle of world radius `r` about `c`, optionally filled and/or stroked.
     pub fn circle(
-        &mut self,
-        c: DVec2,
-        r: f64,
-        fill: Option<Color>,
+        &mut self, c: DVec2, r: f64, fill: Option<Color>,
         stroke: Option<&Stroke>,
     ) {
         self.circle_alpha(c, r, fill.map(Fill::from), stroke);
@@ -331,10 +324,7 @@ impl Page {
 
     /// [`Page::circle`] with a possibly translucent fill, e.g. `Some(palette::ORANGE.with_alpha(0.3))`.
     pub fn circle_alpha(
-        &mut self,
-        c: DVec2,
-        r: f64,
-        fill: Option<Fill>,
+        &mut self, c: DVec2, r: f64, fill: Option<Fill>,
         stroke: Option<&Stroke>,
     ) {
         let q = self.to_page(c);
@@ -352,20 +342,14 @@ impl Page {
     /// The closed polygon through `pts`, optionally filled (opaque) and/or stroked.
     /// For a translucent fill use [`Page::polygon_alpha`].
     pub fn polygon(
-        &mut self,
-        pts: &[DVec2],
-        fill: Option<Color>,
-        stroke: Option<&Stroke>,
+        &mut self, pts: &[DVec2], fill: Option<Color>, stroke: Option<&Stroke>,
     ) {
         self.polygon_alpha(pts, fill.map(Fill::from), stroke);
     }
 
     /// [`Page::polygon`] with a possibly translucent fill, e.g. `Some(palette::SKY_BLUE.with_alpha(0.3))`.
     pub fn polygon_alpha(
-        &mut self,
-        pts: &[DVec2],
-        fill: Option<Fill>,
-        stroke: Option<&Stroke>,
+        &mut self, pts: &[DVec2], fill: Option<Fill>, stroke: Option<&Stroke>,
     ) {
         let q: Vec<DVec2> = pts.iter().map(|&p| self.to_page(p)).collect();
         let el = format!(
@@ -380,13 +364,8 @@ impl Page {
     /// direction `from_dir` to direction `to_dir`, with an optional label just outside the
     /// middle of the arc.
     pub fn angle_arc(
-        &mut self,
-        centre: DVec2,
-        from_dir: DVec2,
-        to_dir: DVec2,
-        radius_px: f64,
-        stroke: &Stroke,
-        label: Option<&str>,
+        &mut self, centre: DVec2, from_dir: DVec2, to_dir: DVec2,
+        radius_px: f64, stroke: &Stroke, label: Option<&str>,
     ) {
         let a0 = from_dir.y.atan2(from_dir.x);
         let sweep =
@@ -492,11 +471,7 @@ impl Page {
 
     /// A label at `p` with its size in page px and colour.
     pub fn label_sized(
-        &mut self,
-        p: DVec2,
-        text: &str,
-        anchor: Anchor,
-        size_px: f64,
+        &mut self, p: DVec2, text: &str, anchor: Anchor, size_px: f64,
         color: Color,
     ) {
         let q = self.to_page(p);
@@ -505,22 +480,14 @@ impl Page {
 
     /// Black text at page point `p_page` (y down), for titles and captions.
     pub fn text_page(
-        &mut self,
-        p_page: DVec2,
-        text: &str,
-        anchor: Anchor,
-        size_px: f64,
+        &mut self, p_page: DVec2, text: &str, anchor: Anchor, size_px: f64,
     ) {
         self.page_label(p_page, text, anchor, size_px, palette::BLACK);
     }
 
     /// A label at a page point.
     fn page_label(
-        &mut self,
-        q: DVec2,
-        text: &str,
-        anchor: Anchor,
-        size: f64,
+        &mut self, q: DVec2, text: &str, anchor: Anchor, size: f64,
         color: Color,
     ) {
         let (align, x, y) = label_position(q, anchor, size);
@@ -578,12 +545,7 @@ fn points_attr(q: &[DVec2]) -> String {
 /// (Liang–Barsky). Returns the parameter range inside, or `None` if the line misses it or `dir`
 /// is zero.
 pub fn clip_line(
-    p: DVec2,
-    dir: DVec2,
-    min: DVec2,
-    max: DVec2,
-    t_min: f64,
-    t_max: f64,
+    p: DVec2, dir: DVec2, min: DVec2, max: DVec2, t_min: f64, t_max: f64,
 ) -> Option<(f64, f64)> {
     if dir == DVec2::ZERO {
         return None;

@@ -27,8 +27,7 @@ pub fn log_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
 
 /// A range on a log axis around `values`, `pad` times wider each way.
 pub fn padded_log_range(
-    values: impl Iterator<Item = f64>,
-    pad: f64,
+    values: impl Iterator<Item = f64>, pad: f64,
 ) -> std::ops::Range<f64> {
     let (lo, hi) = values
         .filter(|v| *v > 0.0 && v.is_finite())
@@ -55,11 +54,8 @@ pub fn number_label(x: &f64) -> String {
 
 /// A log–log chart on `area` with the given ranges and axis names.
 pub fn log_log<'a, 'b>(
-    area: &'a ChartArea<'b>,
-    x: std::ops::Range<f64>,
-    y: std::ops::Range<f64>,
-    x_desc: &str,
-    y_desc: &str,
+    area: &'a ChartArea<'b>, x: std::ops::Range<f64>, y: std::ops::Range<f64>,
+    x_desc: &str, y_desc: &str,
 ) -> Result<LogChart<'a, 'b>, ChartError> {
     let mut c = ChartBuilder::on(area)
         .margin(14)
@@ -81,11 +77,8 @@ pub fn log_log<'a, 'b>(
 
 /// A label beside the point `at`, where it covers nothing else.
 pub fn label<DB: DrawingBackend, X, Y>(
-    c: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
-    labels: &mut Labels,
-    at: (X::ValueType, Y::ValueType),
-    text: &str,
-    colour: &RGBColor,
+    c: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>, labels: &mut Labels,
+    at: (X::ValueType, Y::ValueType), text: &str, colour: &RGBColor,
 ) -> Result<(), ChartError>
 where
     X: Ranged,
@@ -117,9 +110,7 @@ where
 /// of the dots of a row in a chart of named rows.
 pub fn dot<DB: DrawingBackend, X, Y>(
     c: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
-    at: (X::ValueType, Y::ValueType),
-    dy: i32,
-    colour: &RGBColor,
+    at: (X::ValueType, Y::ValueType), dy: i32, colour: &RGBColor,
 ) -> Result<(), ChartError>
 where
     X: Ranged,
@@ -136,9 +127,7 @@ where
 /// vertically: a note at the end of a row.
 pub fn note<DB: DrawingBackend, X, Y>(
     c: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
-    at: (X::ValueType, Y::ValueType),
-    dx: i32,
-    text: String,
+    at: (X::ValueType, Y::ValueType), dx: i32, text: String,
     (px, colour): (f64, &RGBColor),
 ) -> Result<(), ChartError>
 where
@@ -157,10 +146,7 @@ where
 
 /// A pale line through `points` (x, y) and a dot of `radius` on each.
 pub fn line_with_dots(
-    c: &mut LogChart,
-    points: &[(f64, f64)],
-    colour: RGBColor,
-    radius: i32,
+    c: &mut LogChart, points: &[(f64, f64)], colour: RGBColor, radius: i32,
 ) -> Result<(), ChartError> {
     c.draw_series(LineSeries::new(
         points.iter().copied(),
@@ -176,10 +162,7 @@ pub fn line_with_dots(
 
 /// A legend row of coloured dots and names, at the top of `area`.
 pub fn legend(
-    area: &ChartArea,
-    entries: &[(&str, RGBColor)],
-    x: i32,
-    spacing: i32,
+    area: &ChartArea, entries: &[(&str, RGBColor)], x: i32, spacing: i32,
 ) -> Result<(), ChartError> {
     for (i, (name, colour)) in entries.iter().enumerate() {
         let x = x + spacing * i as i32;
@@ -192,9 +175,7 @@ pub fn legend(
 /// A legend row of short lines with a dot on each and names, at the top
 /// of `area`, the names `px` tall: the legend of a chart of lines.
 pub fn line_legend(
-    area: &ChartArea,
-    entries: &[(&str, RGBColor)],
-    (x, spacing): (i32, i32),
+    area: &ChartArea, entries: &[(&str, RGBColor)], (x, spacing): (i32, i32),
     px: f64,
 ) -> Result<(), ChartError> {
     for (i, (name, colour)) in entries.iter().enumerate() {
@@ -218,10 +199,8 @@ pub type ErrorChart<'a, 'b> =
 /// `errors`, with its break below the row of 0; every run is to be drawn
 /// as a point on it.
 pub fn accuracy_against_speed<'a, 'b>(
-    area: &'a ChartArea<'b>,
-    millis: impl Iterator<Item = f64> + Clone,
-    errors: &LogAxis,
-    error: &str,
+    area: &'a ChartArea<'b>, millis: impl Iterator<Item = f64> + Clone,
+    errors: &LogAxis, error: &str,
 ) -> Result<ErrorChart<'a, 'b>, ChartError> {
     let max_ms = millis.clone().fold(0.0, f64::max) * 1.05;
     let min_ms = millis.fold(f64::INFINITY, f64::min) * 0.95;

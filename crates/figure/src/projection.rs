@@ -35,10 +35,7 @@ impl Projection {
     /// # Panics
     /// If `eye == target` or `up` is parallel to the view direction.
     pub fn perspective(
-        eye: DVec3,
-        target: DVec3,
-        up: DVec3,
-        fov_y_degrees: f64,
+        eye: DVec3, target: DVec3, up: DVec3, fov_y_degrees: f64,
     ) -> Projection {
         let forward = (target - eye).normalize();
         let right = forward.cross(up).normalize();

@@ -54,10 +54,7 @@ impl SideView {
 /// on a render. (Chapter 7 derives the same projection step by step for
 /// its rasterizer.)
 pub fn camera_pixel(
-    camera: &raystep_core::Camera,
-    p: DVec3,
-    width: u32,
-    height: u32,
+    camera: &raystep_core::Camera, p: DVec3, width: u32, height: u32,
 ) -> DVec2 {
     let d = p - camera.eye;
     let z = d.dot(camera.forward);

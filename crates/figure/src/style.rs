@@ -206,8 +206,7 @@ impl Stroke {
 
 /// SVG attributes for an optional fill and an optional stroke.
 pub(crate) fn paint_attributes(
-    fill: Option<Fill>,
-    stroke: Option<&Stroke>,
+    fill: Option<Fill>, stroke: Option<&Stroke>,
 ) -> String {
     let mut s = match fill {
         Some(f) if f.opacity < 1.0 => {

@@ -127,12 +127,7 @@ pub(crate) enum Align {
 /// A `<text>` element for label markup `text` with its baseline starting (or centred, or ending)
 /// at page point (`x`, `y`).
 pub(crate) fn text_element(
-    x: f64,
-    y: f64,
-    text: &str,
-    align: Align,
-    size: f64,
-    color: Color,
+    x: f64, y: f64, text: &str, align: Align, size: f64, color: Color,
 ) -> String {
     let anchor = match align {
         Align::Start => "start",

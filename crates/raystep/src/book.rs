@@ -145,9 +145,7 @@ impl Preprocessor for Raystep {
     }
 
     fn run(
-        &self,
-        ctx: &PreprocessorContext,
-        mut book: Book,
+        &self, ctx: &PreprocessorContext, mut book: Book,
     ) -> anyhow::Result<Book> {
         let src = ctx.root.join(&ctx.config.book.src);
         preprocess_book(&src, &mut book)?;

@@ -20,8 +20,7 @@ pub const CHAPTERS: &[&Chapter] = &[
 
 /// The chapter the user named (`1`, `01`, `ch01`, …), among `chapters`.
 pub fn find<'a>(
-    arg: &str,
-    chapters: &[&'a Chapter],
+    arg: &str, chapters: &[&'a Chapter],
 ) -> Result<&'a Chapter, crate::error::Error> {
     crate::workspace::resolve(arg, chapters, |c| c.id).copied()
 }

@@ -116,9 +116,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
 /// judges each exercise. Only cargo failing to start is an error; a build
 /// that fails is a report whose exercises do not compile.
 pub fn check_chapter(
-    root: &Path,
-    chapter: &Chapter,
-    run: &Run,
+    root: &Path, chapter: &Chapter, run: &Run,
 ) -> Result<Report, Error> {
     let dir = root.join("chapters").join(chapter.package);
     let exercises: Vec<String> =
@@ -165,9 +163,7 @@ fn refuse_exercises(report: &mut Report, dir: &Path) {
 /// Only builds the tests of `chapter` (as [`check_chapter`] does): why
 /// nothing could be built, or `None` if it built.
 pub fn build_failure(
-    root: &Path,
-    chapter: &Chapter,
-    run: &Run,
+    root: &Path, chapter: &Chapter, run: &Run,
 ) -> Result<Option<BuildFailure>, Error> {
     Ok(build(
         &cargo_program(),

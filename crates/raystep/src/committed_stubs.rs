@@ -34,10 +34,7 @@ impl Stubs {
     /// over the exercise modules in `src/` (wherever below it each lives)
     /// of the workspace at `copy`.
     pub fn write(
-        &self,
-        copy: &Path,
-        chapter: &Chapter,
-        modules: bool,
+        &self, copy: &Path, chapter: &Chapter, modules: bool,
     ) -> Result<(), Error> {
         let dir = copy.join("chapters").join(chapter.package);
         for exercise in chapter.exercises {

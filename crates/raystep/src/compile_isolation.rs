@@ -33,9 +33,7 @@ fn in_package<'a>(at: &'a str, package: &str) -> &'a str {
 /// The exercises (among `candidates`) whose own file or test file holds a
 /// compiler error.
 pub fn blamed_files(
-    failure: &BuildFailure,
-    package: &str,
-    candidates: &[String],
+    failure: &BuildFailure, package: &str, candidates: &[String],
 ) -> Vec<String> {
     candidates
         .iter()
@@ -55,9 +53,7 @@ pub fn blamed_files(
 /// The first compiler error in the exercise's own files, else the build's
 /// first error.
 pub fn compile_message(
-    failure: &BuildFailure,
-    package: &str,
-    exercise: &str,
+    failure: &BuildFailure, package: &str, exercise: &str,
 ) -> String {
     let own = failure.errors.iter().find_map(|error| {
         let at = in_package(error.at.as_deref()?, package);
@@ -75,10 +71,7 @@ pub fn compile_message(
 /// exercise has one, the stubs are not to be had, or the copy does not
 /// build either.
 pub fn check_others(
-    root: &Path,
-    chapter: &Chapter,
-    run: &Run,
-    failure: &BuildFailure,
+    root: &Path, chapter: &Chapter, run: &Run, failure: &BuildFailure,
 ) -> Result<Option<Report>, Error> {
     if !matches!(failure.failure, CargoFailure::DoesNotCompile(_))
         || !cfg!(unix)
@@ -191,9 +184,7 @@ fn target_dir(root: &Path, run: &Run) -> PathBuf {
 /// to the original, but for `chapters/<chapter>`, which is copied, and the
 /// build output and git's folder, which are left out.
 fn link_all_but(
-    root: &Path,
-    copy: &Path,
-    chapter: &Chapter,
+    root: &Path, copy: &Path, chapter: &Chapter,
 ) -> Result<(), Error> {
     let root = root.canonicalize().map_err(|e| Error::io(root, e))?;
     let link = |from: &Path, to: &Path| -> Result<(), Error> {

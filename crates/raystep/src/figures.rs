@@ -47,9 +47,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
 
 /// Writes every figure and lists the files.
 fn write(
-    chapters: &[&Chapter],
-    out: &Path,
-    format: Format,
+    chapters: &[&Chapter], out: &Path, format: Format,
 ) -> Result<ExitCode, Error> {
     let mut counts = Vec::new();
     let mut total = 0;
@@ -77,9 +75,7 @@ fn write(
 
 /// Compares every figure with the files in `out`, writing nothing.
 fn check(
-    chapters: &[&Chapter],
-    out: &Path,
-    format: Format,
+    chapters: &[&Chapter], out: &Path, format: Format,
 ) -> Result<ExitCode, Error> {
     let mut mismatches = Vec::new();
     let mut expected = 0;

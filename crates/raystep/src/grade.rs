@@ -315,13 +315,8 @@ struct Judge<'a> {
 /// chapter's `exercise/` (its committed `stubs`) and `tests/snapshots/`
 /// (from `root`) are put back first.
 fn grade_student(
-    root: &Path,
-    copy: &Path,
-    chapter: &Chapter,
-    stubs: &Stubs,
-    files: &BTreeMap<String, PathBuf>,
-    run: &Run,
-    judge: Option<&Judge>,
+    root: &Path, copy: &Path, chapter: &Chapter, stubs: &Stubs,
+    files: &BTreeMap<String, PathBuf>, run: &Run, judge: Option<&Judge>,
 ) -> Result<Vec<(String, Verdict)>, Error> {
     let instructor = root.join("chapters").join(chapter.package);
     let scratch = copy.join("chapters").join(chapter.package);
@@ -453,10 +448,7 @@ fn grade_student(
 /// When no error names a file: the submitted exercises that do not compile
 /// on their own, every other submitted file a stub.
 fn alone_failing(
-    copy: &Path,
-    chapter: &Chapter,
-    run: &Run,
-    submitted: &[String],
+    copy: &Path, chapter: &Chapter, run: &Run, submitted: &[String],
     stub: &dyn Fn(&str) -> Result<(), Error>,
 ) -> Result<Vec<String>, Error> {
     if submitted.len() < 2 {

@@ -54,10 +54,7 @@ pub fn new_seed() -> u64 {
 /// would put its own program at the same path). `None` if the chapter has
 /// no held-out program.
 pub fn build_reference(
-    root: &Path,
-    chapter: &Chapter,
-    target_dir: Option<&Path>,
-    keep: &Path,
+    root: &Path, chapter: &Chapter, target_dir: Option<&Path>, keep: &Path,
 ) -> Result<Option<PathBuf>, Error> {
     let name = held_out_name(chapter);
     let source = root
@@ -119,12 +116,8 @@ pub fn build_reference(
 /// most `limit` each; the answers are kept in `answers`), then the
 /// `reference` judges them.
 pub fn judge(
-    reference: &Path,
-    runner: &Path,
-    exercises: &[&str],
-    seed: u64,
-    limit: Duration,
-    answers: &Path,
+    reference: &Path, runner: &Path, exercises: &[&str], seed: u64,
+    limit: Duration, answers: &Path,
 ) -> Result<BTreeMap<String, Verdict>, Error> {
     let mut text = String::new();
     let mut stopped = BTreeMap::new();
@@ -206,8 +199,7 @@ pub fn judge(
 /// The verdict of an exercise once its held-out cases are judged: a pass
 /// of the tests stands only if the held-out cases pass too.
 pub fn merged(
-    verdict: (String, String),
-    held_out: Option<&Verdict>,
+    verdict: (String, String), held_out: Option<&Verdict>,
 ) -> (String, String) {
     match (verdict.0.as_str(), held_out) {
         ("passed", Some(Verdict::Failed(why))) => {

@@ -37,8 +37,7 @@ pub(crate) struct Ran {
 /// started. Ctrl-C still stops it: raystep's terminal signals are forwarded
 /// to the group (see [`process_group`]).
 pub(crate) fn run_with_limit(
-    command: &mut Command,
-    limit: Duration,
+    command: &mut Command, limit: Duration,
 ) -> io::Result<Ran> {
     command
         .stdin(Stdio::null())
@@ -98,9 +97,7 @@ impl Captured {
 
 /// Waits for `child` until `deadline`, then kills its process group.
 fn wait_with_limit(
-    child: &mut Child,
-    group: &process_group::Group,
-    deadline: Instant,
+    child: &mut Child, group: &process_group::Group, deadline: Instant,
 ) -> io::Result<Exit> {
     let mut pause = Duration::from_millis(1);
     loop {

@@ -12,8 +12,7 @@ use crate::error::Error;
 /// The reference module of `exercise` in the chapter folder `chapter`:
 /// the one file named `<exercise>.rs` below its `src/`.
 pub fn reference_module(
-    chapter: &Path,
-    exercise: &str,
+    chapter: &Path, exercise: &str,
 ) -> Result<PathBuf, Error> {
     let src = chapter.join("src");
     let name = format!("{exercise}.rs");

@@ -160,8 +160,7 @@ fn parse_size(size: &str) -> Result<(u32, u32), Error> {
 /// The renderer for `--chapter`, else the chapter folder holding the scene,
 /// else the latest.
 fn choose(
-    chapter: Option<&str>,
-    scene: &Path,
+    chapter: Option<&str>, scene: &Path,
 ) -> Result<(&'static str, Renderer), Error> {
     let renderers: Vec<&Chapter> = CHAPTERS
         .iter()

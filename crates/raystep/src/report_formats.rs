@@ -218,9 +218,7 @@ pub fn junit(heading: &Heading, report: &Report) -> String {
 
 /// The properties, the test cases, and the snapshot advice of the suite.
 fn suite_content(
-    writer: &mut Writer<Vec<u8>>,
-    heading: &Heading,
-    report: &Report,
+    writer: &mut Writer<Vec<u8>>, heading: &Heading, report: &Report,
     cases: &[Case],
 ) -> io::Result<()> {
     writer

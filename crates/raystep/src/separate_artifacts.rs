@@ -22,8 +22,7 @@ use raystep_check::verdicts::lexically_normal;
 /// target folder is the workspace's `target/` (the usual case), or when the
 /// members cannot be read.
 pub fn separate_artifacts(
-    root: &Path,
-    target_dir: Option<&Path>,
+    root: &Path, target_dir: Option<&Path>,
 ) -> Vec<String> {
     let target = target_dir
         .map(Path::to_path_buf)

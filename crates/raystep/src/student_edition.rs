@@ -67,9 +67,7 @@ pub enum Git {
 /// (see [`committed_stubs`]), whatever `exercise/` holds now; the returned
 /// [`Stubs`] name the exercise files that differ from them.
 pub fn export(
-    root: &Path,
-    out: &Path,
-    chapters: &[&Chapter],
+    root: &Path, out: &Path, chapters: &[&Chapter],
 ) -> Result<(Git, Stubs), Error> {
     refuse_non_empty(out)?;
     let stubs = committed_stubs::committed(root, chapters)?;
@@ -151,9 +149,7 @@ fn drop_held_out(copy: &Path, chapter: &Chapter) -> Result<(), Error> {
 /// The chapters the chapter's `Cargo.toml` depends on (its
 /// `[dependencies]`, by the name it gives them), among `chapters`.
 fn chapter_dependencies(
-    manifest: &toml::Table,
-    workspace: &toml::Table,
-    chapters: &[&Chapter],
+    manifest: &toml::Table, workspace: &toml::Table, chapters: &[&Chapter],
 ) -> Vec<String> {
     let Some(dependencies) =
         manifest.get("dependencies").and_then(|d| d.as_table())
@@ -183,9 +179,7 @@ fn chapter_dependencies(
 /// Makes the chapter's `exercise` feature turn on `<dep>/exercise` for
 /// every chapter it depends on (its `exercise = []` line rewritten).
 fn chain_exercise_feature(
-    copy: &Path,
-    chapter: &Chapter,
-    chapters: &[&Chapter],
+    copy: &Path, chapter: &Chapter, chapters: &[&Chapter],
 ) -> Result<(), Error> {
     let path = copy
         .join("chapters")

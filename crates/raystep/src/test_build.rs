@@ -45,10 +45,7 @@ pub(crate) enum Artifacts<'a> {
 /// `cargo test --no-run -p <package> [--features exercise]` in the workspace
 /// root: the test executables it built, or why it built none.
 pub(crate) fn build(
-    cargo: &str,
-    root: &Path,
-    package: &str,
-    options: &Run,
+    cargo: &str, root: &Path, package: &str, options: &Run,
     artifacts: Artifacts<'_>,
 ) -> Result<Result<Built, BuildFailure>, Error> {
     let mut command = Command::new(cargo);

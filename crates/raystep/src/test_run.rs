@@ -28,10 +28,7 @@ const LIST_LIMIT: Duration = Duration::from_secs(10);
 /// Runs the test binaries of `chapter` that a build of the workspace at
 /// `root` made, and judges each exercise.
 pub(crate) fn run_built(
-    root: &Path,
-    chapter: &Chapter,
-    run: &Run,
-    built: Built,
+    root: &Path, chapter: &Chapter, run: &Run, built: Built,
 ) -> Report {
     let dir = root.join("chapters").join(chapter.package);
     let exercises: Vec<String> =
@@ -95,10 +92,7 @@ fn test_threads() -> usize {
 /// from the user's environment that changes what libtest or insta print or
 /// that makes a failing test pass.
 fn test_command(
-    executable: &Executable,
-    cargo: &str,
-    args: &[&str],
-    context: &Context,
+    executable: &Executable, cargo: &str, args: &[&str], context: &Context,
 ) -> Command {
     let mut command = Command::new(&executable.path);
     command
@@ -140,10 +134,7 @@ fn test_command(
 
 /// Runs one test binary with a time limit and reads what it printed.
 fn run_tests(
-    executable: &Executable,
-    cargo: &str,
-    limit: Duration,
-    threads: usize,
+    executable: &Executable, cargo: &str, limit: Duration, threads: usize,
     context: &Context,
 ) -> TestBinary {
     let threads_arg = threads.to_string();
@@ -224,10 +215,7 @@ fn run_tests(
 /// The tests of a binary, in the order libtest starts them (`--list`);
 /// empty if that cannot be told.
 fn list_tests(
-    executable: &Executable,
-    cargo: &str,
-    limit: Duration,
-    context: &Context,
+    executable: &Executable, cargo: &str, limit: Duration, context: &Context,
 ) -> Vec<String> {
     let mut list = test_command(
         executable,

@@ -127,9 +127,7 @@ pub fn normalise_chapter(arg: &str) -> String {
 
 /// Picks the chapter the user named out of `known` (ids in lecture order).
 pub fn resolve<'a, T>(
-    arg: &str,
-    known: &'a [T],
-    id: impl Fn(&T) -> &str,
+    arg: &str, known: &'a [T], id: impl Fn(&T) -> &str,
 ) -> Result<&'a T, Error> {
     let wanted = normalise_chapter(arg);
     known.iter().find(|c| id(c) == wanted).ok_or_else(|| {

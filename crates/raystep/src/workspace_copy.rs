@@ -42,9 +42,7 @@ pub fn is_skipped(relative: &Path) -> bool {
 /// Symbolic links are copied as links. Returns the files copied, relative
 /// to `from`.
 pub fn copy_sources(
-    from: &Path,
-    to: &Path,
-    exclude: &[PathBuf],
+    from: &Path, to: &Path, exclude: &[PathBuf],
 ) -> Result<Vec<PathBuf>, Error> {
     let exclude: Vec<PathBuf> = exclude
         .iter()

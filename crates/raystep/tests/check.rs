@@ -64,9 +64,7 @@ fn check(args: &[&str]) -> (bool, String, String) {
 /// Runs `raystep check <args> --quiet` in `dir`, its environment adjusted by
 /// `configure`: (success, stdout, stderr).
 fn raystep(
-    args: &[&str],
-    dir: &Path,
-    configure: impl FnOnce(&mut Command),
+    args: &[&str], dir: &Path, configure: impl FnOnce(&mut Command),
 ) -> (bool, String, String) {
     let started = Instant::now();
     let mut command = Command::new(env!("CARGO_BIN_EXE_raystep"));

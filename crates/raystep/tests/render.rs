@@ -29,10 +29,7 @@ fn png_size(bytes: &[u8]) -> (u32, u32) {
 /// Renders `scene` into `out` (with `args`), which must succeed and say
 /// which chapter's renderer drew it, and returns the image's size.
 fn render(
-    scene: &str,
-    out: &Path,
-    args: &[&str],
-    renderer: &str,
+    scene: &str, out: &Path, args: &[&str], renderer: &str,
 ) -> (u32, u32) {
     let mut all = vec!["render", scene, "--out", out.to_str().unwrap()];
     all.extend_from_slice(args);

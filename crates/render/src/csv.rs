@@ -137,9 +137,7 @@ fn line_of(text: &str, record: &StringRecord) -> usize {
 
 /// The row of data line `line`, or the error on that line.
 fn row<R: Row>(
-    record: &StringRecord,
-    line: usize,
-    columns: &[&str],
+    record: &StringRecord, line: usize, columns: &[&str],
 ) -> Result<R, String> {
     let on_line = |message: String| format!("line {line}: {message}");
     if record.len() != columns.len() {
@@ -161,9 +159,7 @@ fn row<R: Row>(
 
 /// A field that does not read as its column's type, named by its column.
 fn field_error(
-    error: &::csv::Error,
-    record: &StringRecord,
-    columns: &[&str],
+    error: &::csv::Error, record: &StringRecord, columns: &[&str],
 ) -> String {
     let ErrorKind::Deserialize { err, .. } = error.kind() else {
         return error.to_string();

@@ -25,8 +25,7 @@ pub struct Image {
 
 /// The number of pixels of a `width × height` image, if it is a valid size.
 pub(crate) fn pixel_count(
-    width: u32,
-    height: u32,
+    width: u32, height: u32,
 ) -> Result<usize, RenderError> {
     if width == 0 || height == 0 {
         return Err(RenderError::InvalidSize { width, height });
@@ -56,9 +55,7 @@ impl Image {
     ///
     /// If `width` or `height` is 0, like [`Image::new`].
     pub fn from_fn(
-        width: u32,
-        height: u32,
-        mut f: impl FnMut(u32, u32) -> Rgb,
+        width: u32, height: u32, mut f: impl FnMut(u32, u32) -> Rgb,
     ) -> Image {
         if let Err(e) = pixel_count(width, height) {
             panic!("{e}");
@@ -77,9 +74,7 @@ impl Image {
     /// An image from its pixels, row-major from the top. The caller has
     /// checked the size (`pixels.len() == width * height`, both ≥ 1).
     pub(crate) fn from_pixels(
-        width: u32,
-        height: u32,
-        pixels: Vec<Rgb>,
+        width: u32, height: u32, pixels: Vec<Rgb>,
     ) -> Image {
         debug_assert_eq!(
             pixels.len() as u64,

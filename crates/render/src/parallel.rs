@@ -55,9 +55,7 @@ impl RenderOptions {
 /// [`RenderError::ThreadPool`] if the threads cannot be started. A panic in
 /// `pixel` is not caught: it reaches the caller.
 pub fn render(
-    width: u32,
-    height: u32,
-    options: &RenderOptions,
+    width: u32, height: u32, options: &RenderOptions,
     pixel: impl Fn(u32, u32) -> Rgb + Sync,
 ) -> Result<Image, RenderError> {
     let count = pixel_count(width, height)?;

@@ -28,9 +28,7 @@ impl Timing {
     /// the caches; returns each job's median time per run in milliseconds.
     /// `step` is called once per round.
     pub fn median_ms(
-        self,
-        jobs: &mut [&mut dyn FnMut()],
-        mut step: impl FnMut(),
+        self, jobs: &mut [&mut dyn FnMut()], mut step: impl FnMut(),
     ) -> Vec<f64> {
         for job in jobs.iter_mut() {
             job();

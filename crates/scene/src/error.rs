@@ -81,9 +81,7 @@ pub(crate) struct Context<'a> {
 impl<'a> Context<'a> {
     /// Remembers the path and span of every value in `document`.
     pub(crate) fn new(
-        source: &'a str,
-        file: &'a str,
-        document: &Spanned<DeTable<'_>>,
+        source: &'a str, file: &'a str, document: &Spanned<DeTable<'_>>,
     ) -> Self {
         let mut nodes = Vec::new();
         collect_table(document.get_ref(), "", 1, &mut nodes);
@@ -130,9 +128,7 @@ impl<'a> Context<'a> {
 
     /// An error about the value at `span`; the field is found from the span.
     pub(crate) fn error(
-        &self,
-        span: Range<usize>,
-        message: impl Into<String>,
+        &self, span: Range<usize>, message: impl Into<String>,
     ) -> SceneError {
         let field = self.field_at(&span);
         self.error_in(span, field, message)
@@ -141,10 +137,7 @@ impl<'a> Context<'a> {
     /// An error about `field`, located at `span` (used when the field is
     /// absent and `span` is its table's).
     pub(crate) fn error_in(
-        &self,
-        span: Range<usize>,
-        field: String,
-        message: impl Into<String>,
+        &self, span: Range<usize>, field: String, message: impl Into<String>,
     ) -> SceneError {
         let (line, column) = self.line_column(span.start);
         SceneError::Invalid {
@@ -242,10 +235,7 @@ fn join(parent: &str, key: &str) -> String {
 }
 
 fn collect_table(
-    table: &DeTable<'_>,
-    path: &str,
-    depth: usize,
-    nodes: &mut Vec<Node>,
+    table: &DeTable<'_>, path: &str, depth: usize, nodes: &mut Vec<Node>,
 ) {
     for (key, value) in table.iter() {
         let path = join(path, key.get_ref());
@@ -260,10 +250,7 @@ fn collect_table(
 }
 
 fn collect_value(
-    value: &DeValue<'_>,
-    path: &str,
-    depth: usize,
-    nodes: &mut Vec<Node>,
+    value: &DeValue<'_>, path: &str, depth: usize, nodes: &mut Vec<Node>,
 ) {
     match value {
         DeValue::Table(table) => collect_table(table, path, depth, nodes),

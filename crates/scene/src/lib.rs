@@ -569,8 +569,7 @@ fn build(raw: RawScene, cx: &Context) -> Result<Scene, SceneError> {
 }
 
 fn camera(
-    raw: Spanned<Table<raw::RawCamera>>,
-    cx: &Context,
+    raw: Spanned<Table<raw::RawCamera>>, cx: &Context,
 ) -> Result<CameraSpec, SceneError> {
     let table_span = raw.span();
     let Table(c) = raw.into_inner();
@@ -658,9 +657,7 @@ fn camera(
 }
 
 fn material(
-    name: String,
-    raw: Spanned<Table<RawMaterial>>,
-    cx: &Context,
+    name: String, raw: Spanned<Table<RawMaterial>>, cx: &Context,
 ) -> Result<Material, SceneError> {
     let Table(m) = raw.into_inner();
     let kd = m.kd.map_or(DVec3::splat(0.7), |c| c.0);
@@ -694,9 +691,7 @@ fn material(
 }
 
 fn object(
-    raw: Spanned<Table<RawObject>>,
-    materials: &[Material],
-    cx: &Context,
+    raw: Spanned<Table<RawObject>>, materials: &[Material], cx: &Context,
 ) -> Result<Object, SceneError> {
     let span = raw.span();
     let Table(mut o) = raw.into_inner();

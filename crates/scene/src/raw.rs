@@ -216,8 +216,7 @@ impl<'de, T: Deserialize<'de>> Deserialize<'de> for Table<T> {
                 f.write_str("a table")
             }
             fn visit_map<A: MapAccess<'de>>(
-                self,
-                map: A,
+                self, map: A,
             ) -> Result<T, A::Error> {
                 T::deserialize(de::value::MapAccessDeserializer::new(map))
             }
@@ -360,8 +359,7 @@ impl<'de> Deserialize<'de> for Vec3 {
                 f.write_str("an array of 3 numbers [x, y, z]")
             }
             fn visit_seq<A: SeqAccess<'de>>(
-                self,
-                seq: A,
+                self, seq: A,
             ) -> Result<Vec3, A::Error> {
                 let [x, y, z] = three::<Finite, _>(seq, "[x, y, z]")?;
                 Ok(Vec3(DVec3::new(x.0, y.0, z.0)))
@@ -383,8 +381,7 @@ impl<'de> Deserialize<'de> for Colour {
             }
             visit_numbers!(|v| component(v).map(|v| Colour(DVec3::splat(v))));
             fn visit_seq<A: SeqAccess<'de>>(
-                self,
-                seq: A,
+                self, seq: A,
             ) -> Result<Colour, A::Error> {
                 let [r, g, b] = three::<Component, _>(seq, "[r, g, b]")?;
                 Ok(Colour(DVec3::new(r.0, g.0, b.0)))

@@ -30,9 +30,7 @@ pub(crate) const KEYS: [&str; 10] = [
 
 /// The one shape of `object`, whose table is at `span`.
 pub(crate) fn shape(
-    o: RawObject,
-    span: Range<usize>,
-    cx: &Context,
+    o: RawObject, span: Range<usize>, cx: &Context,
 ) -> Result<Shape, SceneError> {
     let keys = [
         o.sphere.as_ref().map(Spanned::span),
@@ -102,8 +100,7 @@ pub(crate) fn shape(
 
 /// The number, if it is positive.
 pub(crate) fn positive(
-    v: &Spanned<Finite>,
-    cx: &Context,
+    v: &Spanned<Finite>, cx: &Context,
 ) -> Result<f64, SceneError> {
     let value = v.get_ref().0;
     if value > 0.0 {
@@ -130,9 +127,7 @@ fn direction(v: &Spanned<Vec3>, cx: &Context) -> Result<DVec3, SceneError> {
 
 /// One of `names`' values by its name; an error lists the names.
 fn named<T: Copy>(
-    name: &Spanned<String>,
-    names: &[(&str, T)],
-    cx: &Context,
+    name: &Spanned<String>, names: &[(&str, T)], cx: &Context,
 ) -> Result<T, SceneError> {
     names
         .iter()

@@ -10,9 +10,7 @@ pub type Answers = (Option<f64>, bool, bool);
 
 /// What `accelerator` answers for `ray` (brute force: [`BruteForce`]).
 pub fn answers(
-    accelerator: &dyn Accelerator,
-    objects: &[Object],
-    ray: &Ray,
+    accelerator: &dyn Accelerator, objects: &[Object], ray: &Ray,
 ) -> Answers {
     let short = Interval::new(0.0, 1.0);
     (
@@ -27,9 +25,7 @@ pub fn answers(
 /// For each of `accelerators`, how many of `rays` it answers unlike
 /// brute force, as `agree(ours, brute force's)` judges two answers.
 pub fn disagreements_by(
-    accelerators: &[&dyn Accelerator],
-    objects: &[Object],
-    rays: &[Ray],
+    accelerators: &[&dyn Accelerator], objects: &[Object], rays: &[Ray],
     agree: impl Fn(&Answers, &Answers) -> bool,
 ) -> Vec<usize> {
     let mut wrong = vec![0; accelerators.len()];
@@ -48,9 +44,7 @@ pub fn disagreements_by(
 /// another any-hit answer). Two objects hit at the very same t are a
 /// tie, not a disagreement.
 pub fn kd_disagreements(
-    accelerators: &[&dyn Accelerator],
-    objects: &[Object],
-    rays: &[Ray],
+    accelerators: &[&dyn Accelerator], objects: &[Object], rays: &[Ray],
 ) -> Vec<usize> {
     disagreements_by(accelerators, objects, rays, |a, b| a == b)
 }
@@ -58,9 +52,7 @@ pub fn kd_disagreements(
 /// How many of `rays` `accelerator` answers differently from brute force
 /// ([`kd_disagreements`] of one).
 pub fn disagreements(
-    accelerator: &dyn Accelerator,
-    objects: &[Object],
-    rays: &[Ray],
+    accelerator: &dyn Accelerator, objects: &[Object], rays: &[Ray],
 ) -> usize {
     kd_disagreements(&[accelerator], objects, rays)[0]
 }

@@ -19,8 +19,7 @@ pub const EDGE_REACH: Interval = Interval {
 /// silhouette: the ray must see both triangles from the same side, and
 /// neither nearly edge-on. Each ray reaches its target at t = 1.
 pub fn shared_edge_rays(
-    triangles: &[[DVec3; 3]],
-    points: &[f64],
+    triangles: &[[DVec3; 3]], points: &[f64],
 ) -> Vec<Ray32> {
     // Step 1: the triangles on each edge (corners compared bit for bit).
     let mut edges: HashMap<[[u64; 3]; 2], Vec<usize>> = HashMap::new();

@@ -105,9 +105,7 @@ pub fn stability_scenes(bunny: &[[DVec3; 3]]) -> Vec<StabilityScene> {
 
 /// `per_case` rays of each dangerous kind for the grid `lattice`.
 pub fn adversarial_rays(
-    lattice: &Lattice,
-    per_case: usize,
-    seed: u64,
+    lattice: &Lattice, per_case: usize, seed: u64,
 ) -> Vec<RayCase> {
     let around = Around::new(lattice.bounds);
     let (b, centre, far) = (around.bounds, around.centre, around.far);

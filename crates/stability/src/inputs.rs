@@ -133,10 +133,7 @@ fn bytes((input, reject): (String, bool)) -> (Vec<u8>, bool) {
 
 /// Mutated scenes, read by `raystep_scene::load`.
 fn scene_case(
-    budget: &Budget,
-    seed: u64,
-    expect: Expect,
-    mutate: SceneMutation,
+    budget: &Budget, seed: u64, expect: Expect, mutate: SceneMutation,
 ) -> Vec<(Count, Expect)> {
     trials("scene parser", expect, budget, seed, "toml", |m, path| {
         // Step 1: a seed, mutated, in a file.
@@ -155,9 +152,7 @@ fn scene_case(
 /// `Ok` if `error` reads `FILE:LINE:COLUMN: …` with a line of `input`,
 /// and a field unless it is a TOML syntax error.
 fn scene_error_located(
-    error: &SceneError,
-    path: &Path,
-    input: &[u8],
+    error: &SceneError, path: &Path, input: &[u8],
 ) -> Verdict {
     let message = error.to_string();
     let lines = input.split(|&b| b == b'\n').count();
@@ -180,8 +175,7 @@ fn scene_error_located(
 /// Mutated OBJ files, read by `Mesh::load_obj`; a mesh it returns must
 /// have every index in range and every vertex finite.
 fn obj_case(
-    budget: &Budget,
-    seed: u64,
+    budget: &Budget, seed: u64,
     mutate: fn(&mut Mutator, &str) -> (Vec<u8>, bool),
 ) -> Vec<(Count, Expect)> {
     // (Until the catalogue found it, what only the OBJ reader (tobj)
@@ -266,9 +260,7 @@ fn mesh_error_located(error: &MeshError, path: &Path, input: &[u8]) -> Verdict {
 /// is not a positive multiple of 24 must be refused (if `lengths`), and
 /// what is read must be the file's floats, bit for bit.
 fn ray_case(
-    budget: &Budget,
-    seed: u64,
-    mutate: fn(&mut Mutator, &[u8]) -> Vec<u8>,
+    budget: &Budget, seed: u64, mutate: fn(&mut Mutator, &[u8]) -> Vec<u8>,
     lengths: bool,
 ) -> Vec<(Count, Expect)> {
     trials(
@@ -378,9 +370,7 @@ fn render_case(budget: &Budget) -> Vec<(Count, Expect)> {
 /// `raystep render` (crates/raystep/src/render.rs) with chapter 6's
 /// renderer (its default outside a chapter folder), at 8×6 pixels.
 fn render(
-    scene: &Path,
-    out: &Path,
-    accelerate: Accelerate,
+    scene: &Path, out: &Path, accelerate: Accelerate,
 ) -> Result<(), String> {
     let file = scene.display().to_string();
     // Step 1: read the scene; nothing is written before this succeeds.
@@ -402,11 +392,7 @@ fn render(
 /// Runs `budget.inputs` trials, the panic hook silenced, each given a
 /// new file `input-K.EXT` in a temporary folder: one count for `method`.
 fn trials(
-    method: &str,
-    expect: Expect,
-    budget: &Budget,
-    seed: u64,
-    extension: &str,
+    method: &str, expect: Expect, budget: &Budget, seed: u64, extension: &str,
     mut trial: impl FnMut(&mut Mutator, &Path) -> Verdict,
 ) -> Vec<(Count, Expect)> {
     let _quiet = Quiet::new();

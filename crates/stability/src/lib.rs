@@ -153,8 +153,7 @@ pub struct Row {
 /// each case before it runs; an error (before any case runs) if the
 /// bunny the cases need cannot be read.
 pub fn run_catalogue(
-    budget: &Budget,
-    started: &mut dyn FnMut(&Case),
+    budget: &Budget, started: &mut dyn FnMut(&Case),
 ) -> Result<Vec<Row>, String> {
     scenes::load_bunny()?;
     let mut rows = Vec::new();

@@ -149,9 +149,7 @@ fn reflectances(cos_theta: f64, n_theta: f64, n_phi: f64) -> [f64; 2] {
 /// Runs `trial` `budget.rays` times: each says whether refract, fresnel
 /// and schlick failed; counted, none of the three allowed to fail.
 fn three(
-    budget: &Budget,
-    seed: u64,
-    trial: impl FnMut(&mut SplitMix64) -> [bool; 3],
+    budget: &Budget, seed: u64, trial: impl FnMut(&mut SplitMix64) -> [bool; 3],
 ) -> Vec<(Count, Expect)> {
     let failed = count_failures(budget.rays, seed, trial);
     let methods = ["refract", "fresnel", "schlick"];
@@ -161,9 +159,7 @@ fn three(
 /// Rays leaving `material` into air at θc − 1e-9, θc and θc + 1e-9 rad in
 /// turn, in random frames.
 fn critical(
-    budget: &Budget,
-    material: &str,
-    seed: u64,
+    budget: &Budget, material: &str, seed: u64,
 ) -> Vec<(Count, Expect)> {
     let (n_theta, n_phi) = (ior(material), ior("air"));
     let theta_c = critical_angle(n_theta, n_phi).expect("denser than air");

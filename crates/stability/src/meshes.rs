@@ -168,9 +168,7 @@ type Answers = (Option<u64>, bool, bool);
 /// What `structure` answers for `ray` over `interval`, asked through the
 /// mesh seam (the counts are not kept).
 fn answers(
-    structure: &dyn MeshAccelerator,
-    ray: &Ray32,
-    interval: Interval,
+    structure: &dyn MeshAccelerator, ray: &Ray32, interval: Interval,
 ) -> Answers {
     let counts = &mut TraceCounts::default();
     (

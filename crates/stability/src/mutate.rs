@@ -488,10 +488,7 @@ impl Mutator {
 
     /// A random number of `text` replaced by `by`.
     fn replace_number(
-        &mut self,
-        text: &str,
-        by: &str,
-        reject: bool,
+        &mut self, text: &str, by: &str, reject: bool,
     ) -> (String, bool) {
         let numbers = numbers(text);
         if numbers.is_empty() {

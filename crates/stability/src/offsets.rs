@@ -230,11 +230,8 @@ fn grazing(rng: &mut SplitMix64, normal: DVec3) -> DVec3 {
 /// each strategy's failures: its ray meets the surface it starts on
 /// (acne), or differs from the truth about the blocker (a leak).
 fn failures(
-    targets: &[Target],
-    scale: f64,
-    light: fn(&mut SplitMix64, DVec3) -> DVec3,
-    trials: usize,
-    seed: u64,
+    targets: &[Target], scale: f64, light: fn(&mut SplitMix64, DVec3) -> DVec3,
+    trials: usize, seed: u64,
 ) -> Vec<(Count, Offset)> {
     let mut rng = SplitMix64::new(seed);
     let mut failed = [0u64; OFFSETS.len()];
@@ -282,8 +279,7 @@ fn failures(
 
 /// The counts, each strategy marked `Never` if it is in `survivors`.
 fn marked(
-    counts: Vec<(Count, Offset)>,
-    survivors: &[Offset],
+    counts: Vec<(Count, Offset)>, survivors: &[Offset],
 ) -> Vec<(Count, Expect)> {
     counts
         .into_iter()

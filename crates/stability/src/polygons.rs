@@ -64,9 +64,7 @@ const CROSSING: &str = "crossing number (inside_crossing)";
 
 /// One count per inside test, edge test first.
 fn per_inside_test(
-    failures: [u64; 2],
-    trials: u64,
-    expect: [Expect; 2],
+    failures: [u64; 2], trials: u64, expect: [Expect; 2],
 ) -> Vec<(Count, Expect)> {
     per_method([EDGE_TEST, CROSSING], failures, trials, expect)
 }
@@ -77,9 +75,7 @@ const INSIDE_TESTS: [fn(&[DVec2], DVec2) -> bool; 2] =
 
 /// How many of `polygons` `inside` says hold `p`.
 fn owners(
-    inside: fn(&[DVec2], DVec2) -> bool,
-    polygons: &[&[DVec2]],
-    p: DVec2,
+    inside: fn(&[DVec2], DVec2) -> bool, polygons: &[&[DVec2]], p: DVec2,
 ) -> usize {
     polygons.iter().filter(|outline| inside(outline, p)).count()
 }

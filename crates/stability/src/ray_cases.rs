@@ -33,8 +33,7 @@ impl Cases {
 
     /// The kind `name`: `make` called for each of its rays.
     pub fn case(
-        &mut self,
-        name: &'static str,
+        &mut self, name: &'static str,
         mut make: impl FnMut(&mut SplitMix64) -> Ray,
     ) -> RayCase {
         RayCase {

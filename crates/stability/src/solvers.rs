@@ -241,11 +241,7 @@ impl Round {
     /// The root between `out` (g > 0) and `inside` (g < 0), down to
     /// 1e-13 of `scale` (or to neighbouring doubles).
     fn bisect(
-        &self,
-        ray: &Ray,
-        mut out: f64,
-        mut inside: f64,
-        scale: f64,
+        &self, ray: &Ray, mut out: f64, mut inside: f64, scale: f64,
     ) -> f64 {
         while (out - inside).abs() > 1e-13 * (scale + out.abs()) {
             let mid = 0.5 * (out + inside);
@@ -298,9 +294,7 @@ fn textbook(sphere: &Sphere, ray: &Ray, interval: Interval) -> Option<f64> {
 
 /// The first hit of each sphere method within `interval`.
 fn sphere_hits(
-    sphere: &Sphere,
-    ray: &Ray,
-    interval: Interval,
+    sphere: &Sphere, ray: &Ray, interval: Interval,
 ) -> [Option<f64>; 4] {
     let d = ray.direction;
     let f = ray.origin - sphere.center;
@@ -322,9 +316,7 @@ fn sphere_hits(
 /// where it misses, or puts the hit more than 1e-6·r along the ray
 /// from the truth's.
 fn sphere_failures(
-    sphere: &Sphere,
-    ray: &Ray,
-    interval: Interval,
+    sphere: &Sphere, ray: &Ray, interval: Interval,
 ) -> [bool; 4] {
     let truth = Round::sphere(sphere.center, sphere.radius)
         .roots(ray)
@@ -350,8 +342,7 @@ fn random_sphere(rng: &mut SplitMix64) -> Sphere {
 /// One count per sphere method: the textbook formula and the textbook
 /// discriminant are shown, chapter 3's form (twice) must survive.
 fn per_sphere_method(
-    failures: [u64; 4],
-    trials: usize,
+    failures: [u64; 4], trials: usize,
 ) -> Vec<(Count, Expect)> {
     let expect = [Expect::Shown, Expect::Shown, Expect::Never, Expect::Never];
     per_method(SPHERE_METHODS, failures, trials as u64, expect)
@@ -443,10 +434,7 @@ fn random_torus(rng: &mut SplitMix64) -> (f64, f64) {
 /// its roots within 1e-6·r, one to one) or finds a root the truth has
 /// not. `truth` holds the roots with t ≥ 0.
 fn torus_failures(
-    major: f64,
-    minor: f64,
-    ray: &Ray,
-    truth: &[f64],
+    major: f64, minor: f64, ray: &Ray, truth: &[f64],
 ) -> [bool; 2] {
     let within = 1e-6 * minor / ray.direction.length();
     TORUS_METHODS.map(|(solver, _)| {
@@ -496,9 +484,7 @@ fn level_ray(height: f64, angle: f64, pass: f64, lead: f64) -> Ray {
 /// Runs `trials` level rays made by `ray` from a random torus (R, r),
 /// and counts each solver's failures against the truth.
 fn torus_case(
-    budget: &Budget,
-    seed: u64,
-    ray: fn(&mut SplitMix64, f64, f64) -> Ray,
+    budget: &Budget, seed: u64, ray: fn(&mut SplitMix64, f64, f64) -> Ray,
 ) -> Vec<(Count, Expect)> {
     let failures = count_failures(budget.rays, seed, |rng| {
         let (major, minor) = random_torus(rng);

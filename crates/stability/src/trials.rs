@@ -39,8 +39,7 @@ pub(crate) fn tangent(rng: &mut SplitMix64, normal: DVec3) -> DVec3 {
 /// Runs `trial` `trials` times with a generator seeded `seed`; each
 /// trial says, per method, whether it failed.
 pub(crate) fn count_failures<const N: usize>(
-    trials: usize,
-    seed: u64,
+    trials: usize, seed: u64,
     mut trial: impl FnMut(&mut SplitMix64) -> [bool; N],
 ) -> [u64; N] {
     let mut rng = SplitMix64::new(seed);
@@ -56,10 +55,7 @@ pub(crate) fn count_failures<const N: usize>(
 /// One count per method: its name, its failures of `trials`, and
 /// whether it may fail.
 pub(crate) fn per_method<const N: usize>(
-    methods: [&str; N],
-    failures: [u64; N],
-    trials: u64,
-    expect: [Expect; N],
+    methods: [&str; N], failures: [u64; N], trials: u64, expect: [Expect; N],
 ) -> Vec<(Count, Expect)> {
     methods
         .into_iter()

@@ -228,10 +228,7 @@ fn not_grazing(rng: &mut SplitMix64, normal: DVec3) -> DVec3 {
 /// and chapter 2's polygon for plane + inside (no hit where it refuses
 /// the corners).
 fn hit_once(
-    test: TriangleTest,
-    v: [DVec3; 3],
-    ray: &Ray,
-    interval: Interval,
+    test: TriangleTest, v: [DVec3; 3], ray: &Ray, interval: Interval,
 ) -> Option<f64> {
     match test {
         TriangleTest::PlaneInside => {
@@ -269,9 +266,7 @@ fn ray_to(target: DVec3, d: DVec3, distance: f64) -> Ray {
 
 /// One count per triangle test, in the lecture's order.
 fn per_test(
-    failures: [u64; 3],
-    trials: u64,
-    expect: [Expect; 3],
+    failures: [u64; 3], trials: u64, expect: [Expect; 3],
 ) -> Vec<(Count, Expect)> {
     let names = TriangleTest::ALL.map(TriangleTest::name);
     per_method(names, failures, trials, expect)
@@ -549,9 +544,7 @@ fn lattice_target(rng: &mut SplitMix64, spot: &Spot) -> DVec3 {
 /// A ray at a lattice point of the spot along a small integer direction
 /// (components −4…4) all its triangles face: every number exact.
 fn aim_on_the_lattice(
-    rng: &mut SplitMix64,
-    spot: &Spot,
-    _reach: f64,
+    rng: &mut SplitMix64, spot: &Spot, _reach: f64,
 ) -> Option<Ray> {
     let target = lattice_target(rng, spot);
     for _ in 0..100 {
@@ -571,9 +564,7 @@ fn aim_on_the_lattice(
 /// A ray at a lattice point of the spot along one of the six axis
 /// directions that all its triangles face (at more than ~3°).
 fn aim_along_an_axis(
-    rng: &mut SplitMix64,
-    spot: &Spot,
-    _reach: f64,
+    rng: &mut SplitMix64, spot: &Spot, _reach: f64,
 ) -> Option<Ray> {
     let axes: Vec<DVec3> = [DVec3::X, DVec3::Y, DVec3::Z]
         .into_iter()
@@ -590,9 +581,7 @@ fn aim_along_an_axis(
 
 /// [`aim_along_an_axis`] with the direction's zero components −0.0.
 fn aim_along_an_axis_negative_zero(
-    rng: &mut SplitMix64,
-    spot: &Spot,
-    reach: f64,
+    rng: &mut SplitMix64, spot: &Spot, reach: f64,
 ) -> Option<Ray> {
     let ray = aim_along_an_axis(rng, spot, reach)?;
     let d = ray
@@ -637,11 +626,7 @@ impl Tally {
 /// turn, counted: a leak where a test reports no hit near the spot, a
 /// double hit where it reports two or more.
 fn leaks_and_doubles(
-    surfaces: &[Surface],
-    spots: Spots,
-    trials: usize,
-    seed: u64,
-    aim: Aim,
+    surfaces: &[Surface], spots: Spots, trials: usize, seed: u64, aim: Aim,
 ) -> Tally {
     let mut rng = SplitMix64::new(seed);
     let mut tally = Tally {
@@ -751,10 +736,7 @@ fn quantized_icosphere() -> Vec<Surface> {
 /// vertices of `surfaces`: only the watertight test is built to have
 /// none.
 fn at_edges_and_vertices(
-    surfaces: &[Surface],
-    budget: &Budget,
-    seed: u64,
-    aim: Aim,
+    surfaces: &[Surface], budget: &Budget, seed: u64, aim: Aim,
 ) -> Vec<(Count, Expect)> {
     let tally =
         leaks_and_doubles(surfaces, Spots::Both, budget.rays, seed, aim);

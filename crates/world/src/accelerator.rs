@@ -23,19 +23,13 @@ pub trait Accelerator: std::fmt::Debug + Send + Sync {
     /// The closest hit of `ray` among `objects` with `t` in `interval`:
     /// which object (its index), and the hit.
     fn closest_hit(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
     ) -> Option<(usize, Hit)>;
 
     /// Does any of `objects` meet `ray` with `t` in `interval`? (A shadow
     /// ray asks only this: one blocker is enough.)
     fn any_hit(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
     ) -> bool;
 }
 // ANCHOR_END: accelerator

@@ -95,9 +95,7 @@ impl World {
     /// The world of `scene`, each shape made by `make_shape`, searched by
     /// `accelerator`. `file` names the scene in errors.
     pub fn from_scene(
-        scene: &Scene,
-        file: &str,
-        make_shape: MakeShape,
+        scene: &Scene, file: &str, make_shape: MakeShape,
         accelerator: Arc<dyn Accelerator>,
     ) -> Result<World, WorldError> {
         let mut objects = Vec::with_capacity(scene.objects.len());
@@ -133,9 +131,7 @@ impl World {
     /// The closest hit of `ray` within `interval`: which object, and the
     /// hit (asked of the [`Accelerator`]).
     pub fn closest_hit(
-        &self,
-        ray: &Ray,
-        interval: Interval,
+        &self, ray: &Ray, interval: Interval,
     ) -> Option<(usize, Hit)> {
         self.accelerator.closest_hit(&self.objects, ray, interval)
     }

@@ -20,18 +20,12 @@ use raystep_core::{Interval, Ray32};
 pub trait MeshAccelerator: Sync {
     /// The closest hit of `ray` within `interval`.
     fn closest_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> Option<MeshHit>;
 
     /// Does any triangle meet `ray` within `interval`? (A shadow ray.)
     fn any_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> bool;
 }
 // ANCHOR_END: mesh_accelerator

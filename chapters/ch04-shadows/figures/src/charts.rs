@@ -52,8 +52,7 @@ fn wrong(row: &AcneRow) -> f64 {
 }
 
 fn draw(
-    area: &raystep_figure::ChartArea,
-    rows: &[AcneRow],
+    area: &raystep_figure::ChartArea, rows: &[AcneRow],
 ) -> Result<(), ChartError> {
     // a legend across the top, then the two panels, one above the other
     let (legend, panels) = area.split_vertically(64);

@@ -72,8 +72,7 @@ fn parameter_label(row: &StopRow) -> String {
 }
 
 fn draw(
-    area: &raystep_figure::ChartArea,
-    rows: &[StopRow],
+    area: &raystep_figure::ChartArea, rows: &[StopRow],
 ) -> Result<(), ChartError> {
     // a legend strip across the top, then the RMSE above the max error,
     // one column per scene
@@ -106,11 +105,8 @@ fn draw(
 
 /// One scene's error against the measured render time, both rules.
 fn panel(
-    area: &raystep_figure::ChartArea,
-    scene: &str,
-    of_scene: &[&StopRow],
-    metric: Metric,
-    axis: &LogAxis,
+    area: &raystep_figure::ChartArea, scene: &str, of_scene: &[&StopRow],
+    metric: Metric, axis: &LogAxis,
 ) -> Result<(), ChartError> {
     // from a little below the fastest render; room on the right for the
     // thresholds' labels

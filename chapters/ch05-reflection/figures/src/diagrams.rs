@@ -348,9 +348,7 @@ fn ray_tree() -> Figure {
 /// The traced rays of a pixel's tree under `stop` (not the shadow rays),
 /// each numbered by its depth where it ends, and the cut ray with an X.
 fn draw_rays(
-    page: &mut Page,
-    rays: &[LoggedRay],
-    stop: &Stop,
+    page: &mut Page, rays: &[LoggedRay], stop: &Stop,
     at: &dyn Fn(DVec3) -> DVec2,
 ) {
     for ray in rays.iter().filter(|r| !r.shadow) {

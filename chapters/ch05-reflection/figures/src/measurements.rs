@@ -120,8 +120,7 @@ impl Row for StopRow {
 /// A rule's parameter in the CSV: a depth as a whole number (`3`), a
 /// threshold, which lies below 1, in e notation (`3e-3`).
 fn depth_or_threshold<S: Serializer>(
-    parameter: &f64,
-    s: S,
+    parameter: &f64, s: S,
 ) -> Result<S::Ok, S::Error> {
     if parameter.fract() == 0.0 {
         s.collect_str(parameter)
@@ -174,11 +173,7 @@ pub fn measure_stopping(rounds: usize, mut step: impl FnMut()) -> Vec<StopRow> {
 
 /// The computed part of a row (no time yet).
 fn row(
-    scene: &str,
-    rule: &str,
-    parameter: f64,
-    image: &Image,
-    reference: &Image,
+    scene: &str, rule: &str, parameter: f64, image: &Image, reference: &Image,
     counts: RayCounts,
 ) -> StopRow {
     let error = image_error(image, reference);
@@ -253,10 +248,7 @@ mod tests {
     use raystep_render::csv::{from_csv, from_lines, to_csv};
 
     fn stop_row(
-        rule: &str,
-        parameter: f64,
-        rmse: f64,
-        secondary: u64,
+        rule: &str, parameter: f64, rmse: f64, secondary: u64,
     ) -> StopRow {
         StopRow {
             scene: "mirrors".into(),

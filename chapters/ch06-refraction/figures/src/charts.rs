@@ -69,8 +69,7 @@ fn nudge(mode: usize) -> i32 {
 }
 
 fn draw(
-    area: &raystep_figure::ChartArea,
-    rows: &[FresnelRow],
+    area: &raystep_figure::ChartArea, rows: &[FresnelRow],
 ) -> Result<(), ChartError> {
     // a legend strip across the top, two panels by material, and the
     // accuracy against speed below them

@@ -30,8 +30,7 @@ pub const CHAPTER: Chapter =
 /// refraction, split by the exact Fresnel equations. Chapter 8 renders
 /// its own shapes with it.
 pub fn render_exact(
-    world: &World,
-    options: &RenderOptions,
+    world: &World, options: &RenderOptions,
 ) -> Result<Image, RenderError> {
     let (stop, fresnel) = (&ch06::DEFAULT_STOP, ch06::Fresnel::Exact);
     ch06::render(world, stop, fresnel, options).map(|(image, _)| image)

@@ -147,8 +147,7 @@ pub const RENDER_TIMING: Timing = Timing {
 /// material taking turns (measured). `step` is called after each material,
 /// for a progress bar.
 pub fn measure_fresnel(
-    rounds: usize,
-    mut step: impl FnMut(),
+    rounds: usize, mut step: impl FnMut(),
 ) -> Vec<FresnelRow> {
     let options = RenderOptions {
         threads: Some(1),

@@ -116,8 +116,7 @@ impl<'a> Method<'a> {
     /// The rows of `method`; an error if fewer than two stages of
     /// different sizes were measured.
     pub fn of(
-        rows: &'a [ScalingRow],
-        method: &str,
+        rows: &'a [ScalingRow], method: &str,
     ) -> Result<Method<'a>, String> {
         let mut balls: Vec<&ScalingRow> = rows
             .iter()
@@ -174,9 +173,7 @@ fn power_label(x: &f64) -> String {
 }
 
 fn draw(
-    area: &raystep_figure::ChartArea,
-    cast: &Method,
-    raster: &Method,
+    area: &raystep_figure::ChartArea, cast: &Method, raster: &Method,
 ) -> Result<(), ChartError> {
     let (width, height) = CHART_SIZE;
     let mut c = ChartBuilder::on(area)
@@ -316,9 +313,7 @@ fn draw(
 /// The legend, in the empty upper left: each method, its fit's exponent
 /// as a superscript, and the bunny's marker.
 fn legend(
-    area: &raystep_figure::ChartArea,
-    cast: &Method,
-    raster: &Method,
+    area: &raystep_figure::ChartArea, cast: &Method, raster: &Method,
 ) -> Result<(), ChartError> {
     let (x, y) = (110, 34);
     let style = font(16.0).color(&BLACK);

@@ -241,8 +241,7 @@ pub fn chart_stages(bunny: &Path) -> Result<Vec<(ChartScene, Stage)>, String> {
 /// methods taking turns. `step` is called after each round of each stage,
 /// for a progress bar. An error names the bunny's file if it is missing.
 pub fn measure_scaling(
-    rounds: usize,
-    mut step: impl FnMut(),
+    rounds: usize, mut step: impl FnMut(),
 ) -> Result<Vec<ScalingRow>, String> {
     let mut rows = Vec::new();
     for (scene, stage) in &chart_stages(&bunny_path())? {

@@ -62,12 +62,8 @@ pub fn ns(report: &MethodReport, k: usize) -> f64 {
 /// threads, rounds taking turns, `repeats` rounds (at least one); `step`
 /// is called after each round. The reports come finished, one per method.
 pub fn compare_on(
-    threads: usize,
-    triangles: &[[DVec3; 3]],
-    sets: &[RaySet],
-    methods: &[Method],
-    repeats: usize,
-    step: &mut dyn FnMut(),
+    threads: usize, triangles: &[[DVec3; 3]], sets: &[RaySet],
+    methods: &[Method], repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<MethodReport>, String> {
     let (mut reports, _) = on_threads_with_steps(
         threads,
@@ -98,8 +94,7 @@ pub fn builder_steps(repeats: usize) -> u64 {
 /// Every builder on both bunnies: build time, tree, trace times and work
 /// per ray, f32 nodes, one thread.
 pub fn measure_builders(
-    repeats: usize,
-    step: &mut dyn FnMut(),
+    repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<BuilderRow>, String> {
     let meshes = [
         ("bunny", load(&crate::measurements::bunny_path())?),
@@ -168,8 +163,7 @@ pub fn scaling_steps(repeats: usize) -> u64 {
 /// Brute force beside the hierarchy on the bunny split 0 to 3 times:
 /// time and work per camera ray.
 pub fn measure_scaling(
-    repeats: usize,
-    step: &mut dyn FnMut(),
+    repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<ScalingRow>, String> {
     let mut triangles = load(&crate::measurements::bunny_path())?;
     let mut rows = Vec::new();
@@ -247,8 +241,7 @@ pub fn precision_steps(repeats: usize) -> u64 {
 /// rays aimed at the shared edges of the small bunny, the moved bunny and
 /// a tiled floor that leak through it.
 pub fn measure_precision(
-    repeats: usize,
-    step: &mut dyn FnMut(),
+    repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<PrecisionRow>, String> {
     let small = load(&crate::measurements::bunny_path())?;
     let big = load(&big_bunny_path())?;
@@ -311,8 +304,7 @@ pub fn zbuffer_steps(repeats: usize) -> u64 {
 /// rasterizer, ray casting over every object, and ray casting through the
 /// hierarchy (its build timed apart).
 pub fn measure_zbuffer(
-    repeats: usize,
-    step: &mut dyn FnMut(),
+    repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<ZbufferRow>, String> {
     let stages = chart_stages(&crate::measurements::bunny_path())?;
     let mut rows = Vec::new();

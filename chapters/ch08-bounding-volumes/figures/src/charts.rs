@@ -41,8 +41,7 @@ fn draw_log_ticks(
         SVGBackend<'_>,
         Cartesian2d<RangedCoordf64, RangedCoordf64>,
     >,
-    x: &std::ops::Range<f64>,
-    y: &std::ops::Range<f64>,
+    x: &std::ops::Range<f64>, y: &std::ops::Range<f64>,
 ) -> Result<(), ChartError> {
     for v in TICKS.iter().filter(|v| x.contains(&v.log10())) {
         let at = v.log10();
@@ -87,11 +86,8 @@ fn ratio_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
 /// The chart both figures share: one row per name (the first on top),
 /// the x axis log₁₀ of a ratio over `x`, labelled by [`draw_log_ticks`].
 fn named_rows<'a, 'b>(
-    plot: &'a raystep_figure::ChartArea<'b>,
-    root: &raystep_figure::ChartArea,
-    names: &[&str],
-    x: std::ops::Range<f64>,
-    margin_right: u32,
+    plot: &'a raystep_figure::ChartArea<'b>, root: &raystep_figure::ChartArea,
+    names: &[&str], x: std::ops::Range<f64>, margin_right: u32,
     description: &str,
 ) -> Result<Chart<'a, 'b>, ChartError> {
     let n = names.len() as f64;
@@ -150,11 +146,8 @@ pub fn costs_chart() -> Result<Figure, ChartError> {
 }
 
 fn draw_costs(
-    area: &raystep_figure::ChartArea,
-    rows: &[CostRow],
-    primitives: &[&str],
-    sphere_hit: f64,
-    sphere_miss: f64,
+    area: &raystep_figure::ChartArea, rows: &[CostRow], primitives: &[&str],
+    sphere_hit: f64, sphere_miss: f64,
 ) -> Result<(), ChartError> {
     let (top, plot) = area.split_vertically(40);
     let entries = [("rays that hit it", HIT), ("rays that miss it", MISS)];
@@ -211,9 +204,7 @@ pub fn bounding_chart() -> Result<Figure, ChartError> {
 }
 
 fn draw_bounding(
-    area: &raystep_figure::ChartArea,
-    rows: &[BoundingRow],
-    objects: &[&str],
+    area: &raystep_figure::ChartArea, rows: &[BoundingRow], objects: &[&str],
 ) -> Result<(), ChartError> {
     let (top, plot) = area.split_vertically(40);
     let entries = BOUND_KINDS.map(|(_, colour, name)| (name, colour));

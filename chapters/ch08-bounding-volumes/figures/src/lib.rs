@@ -87,10 +87,7 @@ pub const CHAPTER: Chapter = Chapter::new(
 /// loop; chapters 9 and 10 render with it too (`--accel grid`,
 /// `--accel kdtree` hand it their structures).
 pub fn render(
-    scene: &Scene,
-    file: &str,
-    options: &RenderOptions,
-    accelerate: Accelerate,
+    scene: &Scene, file: &str, options: &RenderOptions, accelerate: Accelerate,
 ) -> Result<Image, String> {
     render_world(ch08::world(scene, file), accelerate, |world| {
         ch06_figures::render_exact(world, options)

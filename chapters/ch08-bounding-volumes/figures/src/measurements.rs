@@ -313,8 +313,7 @@ pub fn bounding_steps(repeats: usize) -> u64 {
 /// Each object alone and behind each kind of bound, on the same seeded
 /// random lines: the counts, and the median time per ray.
 pub fn measure_bounding(
-    repeats: usize,
-    step: &mut dyn FnMut(),
+    repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<BoundingRow>, String> {
     let objects = bounded_objects()?;
     let kinds: Vec<Option<BoundKind>> = std::iter::once(None)

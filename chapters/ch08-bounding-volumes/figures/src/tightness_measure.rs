@@ -8,10 +8,7 @@ use raystep_core::{Interval, Shape};
 
 /// [`measure_tightness`] for this kind of bound around a primitive.
 pub fn tightness(
-    object: &dyn Primitive,
-    kind: BoundKind,
-    rays: u64,
-    seed: u64,
+    object: &dyn Primitive, kind: BoundKind, rays: u64, seed: u64,
 ) -> Tightness {
     measure_tightness(object, &kind.around(object), rays, seed)
 }
@@ -20,10 +17,7 @@ pub fn tightness(
 /// [`sampling_sphere`] ([`RandomLines`] with `seed`) and counts what they
 /// hit. The same seed gives the same counts on every machine.
 pub fn measure_tightness(
-    object: &dyn Shape,
-    bound: &Bound,
-    rays: u64,
-    seed: u64,
+    object: &dyn Shape, bound: &Bound, rays: u64, seed: u64,
 ) -> Tightness {
     let mut counts = Tightness {
         rays,

@@ -117,10 +117,7 @@ impl Bounded {
 
     /// [`Shape::intersect`], adding the tests it makes to `counts`.
     pub fn intersect_counted(
-        &self,
-        ray: &Ray,
-        interval: Interval,
-        counts: &mut TestCounts,
+        &self, ray: &Ray, interval: Interval, counts: &mut TestCounts,
     ) -> Option<Hit> {
         counts.bound += 1;
         self.bound.hit(ray, interval)?;
@@ -133,10 +130,7 @@ impl Bounded {
 /// The bounding-volume test: the cheap question first ("does the ray come
 /// near?"), the expensive one only if the answer is yes.
 pub fn bounded_intersect(
-    bound: &Bound,
-    object: &dyn Shape,
-    ray: &Ray,
-    interval: Interval,
+    bound: &Bound, object: &dyn Shape, ray: &Ray, interval: Interval,
 ) -> Option<Hit> {
     // Step 1: test the bound. A miss there is a miss of the object.
     bound.hit(ray, interval)?;

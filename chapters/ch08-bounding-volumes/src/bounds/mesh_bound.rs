@@ -61,9 +61,7 @@ impl TriangleMesh {
 /// The lecture's closest-hit loop over a mesh's triangles: every ray tests
 /// every one of them.
 fn closest_triangle_hit(
-    triangles: &[MeshTriangle],
-    ray: &Ray,
-    interval: Interval,
+    triangles: &[MeshTriangle], ray: &Ray, interval: Interval,
 ) -> Option<Hit> {
     let mut closest = None;
     let mut interval = interval;

@@ -12,10 +12,7 @@ use super::tree::{Bvh, BvhNode, INTERSECTION, MAX_LEAF, TRAVERSAL};
 /// makes cluster `objects.len() + k` from its two clusters (made before
 /// it). The last cluster is the root; `unbounded` is kept as it is.
 pub(crate) fn flatten(
-    boxes: &[Aabb],
-    objects: Vec<u32>,
-    merges: &[[u32; 2]],
-    unbounded: Vec<u32>,
+    boxes: &[Aabb], objects: Vec<u32>, merges: &[[u32; 2]], unbounded: Vec<u32>,
 ) -> Bvh {
     let m = objects.len();
     if m == 0 {

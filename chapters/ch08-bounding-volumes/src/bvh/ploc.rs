@@ -22,9 +22,7 @@ pub(crate) fn ploc(boxes: &[Aabb], radius: usize) -> Bvh {
 /// The merges PLOC makes over `objects` (cluster `c` is `objects[c]`;
 /// see [`flatten`]).
 pub(crate) fn ploc_merges(
-    boxes: &[Aabb],
-    objects: &[u32],
-    radius: usize,
+    boxes: &[Aabb], objects: &[u32], radius: usize,
 ) -> Vec<[u32; 2]> {
     let radius = radius.max(1);
     // Step 1: the boxes in f32 (only the choices read them) and their

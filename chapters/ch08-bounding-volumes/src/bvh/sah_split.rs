@@ -17,11 +17,7 @@ use crate::SahCosts;
 /// the child's objects. A flat or point-like parent (area 0) gives no
 /// ratio: both children count as certainly hit, probability 1.
 pub fn split_cost(
-    parent: &Aabb,
-    left: &Aabb,
-    n_left: usize,
-    right: &Aabb,
-    n_right: usize,
+    parent: &Aabb, left: &Aabb, n_left: usize, right: &Aabb, n_right: usize,
     costs: &SahCosts,
 ) -> f64 {
     let (n_left, n_right) = (n_left as f64, n_right as f64);

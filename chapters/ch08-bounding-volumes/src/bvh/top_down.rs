@@ -135,10 +135,7 @@ pub(crate) fn refit(nodes: &mut [BvhNode], order: &[u32], boxes: &[Aabb]) {
 /// Reorders `objects` by the builder's rule and says how many go left
 /// (between 1 and `objects.len() − 1`); None for a single object.
 fn choose(
-    builder: Builder,
-    objects: &mut [Item],
-    task: &Task,
-    bins: &mut Bins,
+    builder: Builder, objects: &mut [Item], task: &Task, bins: &mut Bins,
 ) -> Option<Split> {
     if objects.len() <= 1 {
         return None;
@@ -218,10 +215,7 @@ impl Bins {
     /// A(left)·N(left) + A(right)·N(right). None if no cut leaves objects
     /// on both sides.
     fn split(
-        &mut self,
-        objects: &mut [Item],
-        c: &Box32,
-        count: usize,
+        &mut self, objects: &mut [Item], c: &Box32, count: usize,
     ) -> Option<Split> {
         // (no more bins than objects: a small node sweeps few bins)
         let count = count.min(objects.len()).max(2);

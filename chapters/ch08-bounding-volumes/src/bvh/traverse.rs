@@ -10,10 +10,7 @@ impl Accelerator for Bvh {
     /// The closest hit: the near-first walk ([`near_first_closest_hit`],
     /// exercise 6).
     fn closest_hit(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
     ) -> Option<(usize, Hit)> {
         near_first_closest_hit(self, objects, ray, interval)
     }
@@ -21,10 +18,7 @@ impl Accelerator for Bvh {
     /// Does anything meet the ray? The same walk, stopped at the first
     /// object hit, in any order.
     fn any_hit(
-        &self,
-        objects: &[Object],
-        ray: &Ray,
-        interval: Interval,
+        &self, objects: &[Object], ray: &Ray, interval: Interval,
     ) -> bool {
         let hits = |index: u32| {
             objects[index as usize]

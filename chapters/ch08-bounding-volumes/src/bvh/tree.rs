@@ -149,9 +149,7 @@ pub(crate) fn bounded_objects(boxes: &[Aabb]) -> (Vec<u32>, Vec<u32>) {
 /// Does `ray` meet the node's box within `interval` (exercise 1's slab
 /// test)? The entry `t`.
 pub(crate) fn enter(
-    node: &BvhNode,
-    ray: &Ray,
-    interval: Interval,
+    node: &BvhNode, ray: &Ray, interval: Interval,
 ) -> Option<f64> {
     crate::slab_test(&node.bounds, ray, interval).map(|inside| inside.min)
 }

@@ -12,10 +12,7 @@ pub struct MeshBruteForce<'a>(pub &'a [[DVec3; 3]]);
 
 impl MeshAccelerator for MeshBruteForce<'_> {
     fn closest_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         let ray = PreparedRay::traced(ray)?;
         let mut closest = Closest::new(interval);
@@ -26,10 +23,7 @@ impl MeshAccelerator for MeshBruteForce<'_> {
     }
 
     fn any_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> bool {
         PreparedRay::traced(ray).is_some_and(|ray| {
             self.0.iter().any(|v| ray.blocked_by(v, interval, counts))

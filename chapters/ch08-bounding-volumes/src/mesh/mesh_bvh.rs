@@ -88,9 +88,7 @@ impl MeshBvh {
     /// [`triangle_boxes`]) laid out for the fast walk, its boxes stored in
     /// `precision`.
     pub fn new(
-        triangles: &[[DVec3; 3]],
-        tree: &Bvh,
-        precision: NodePrecision,
+        triangles: &[[DVec3; 3]], tree: &Bvh, precision: NodePrecision,
     ) -> MeshBvh {
         let links = tree.nodes.iter().map(|n| (n.bounds, n.first, n.count));
         let nodes = match precision {
@@ -156,10 +154,7 @@ pub fn triangle_boxes(triangles: &[[DVec3; 3]]) -> Vec<Aabb> {
 
 /// An `f32` node from an `f64` box, each bound rounded by `round`.
 fn node32(
-    b: &Aabb,
-    first: u32,
-    count: u32,
-    round: fn(f64, bool) -> f32,
+    b: &Aabb, first: u32, count: u32, round: fn(f64, bool) -> f32,
 ) -> Node32 {
     Node32 {
         min: b.min.to_array().map(|x| round(x, false)),

@@ -73,10 +73,7 @@ impl Node32 {
     /// The slab test in `f32`, the exit scaled by `widen`.
     #[inline]
     fn slab(
-        &self,
-        ray: &PreparedRay,
-        (t_min, t_max): (f32, f32),
-        widen: f32,
+        &self, ray: &PreparedRay, (t_min, t_max): (f32, f32), widen: f32,
     ) -> Option<f32> {
         let bounds = [self.min, self.max];
         let (mut near, mut far) = (t_min, t_max);
@@ -143,10 +140,7 @@ impl SlabNode for Plain<'_> {
 
 impl MeshAccelerator for MeshBvh {
     fn closest_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         let ray = PreparedRay::traced(ray)?;
         match &self.nodes {
@@ -159,10 +153,7 @@ impl MeshAccelerator for MeshBvh {
     }
 
     fn any_hit(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> bool {
         let Some(ray) = PreparedRay::traced(ray) else {
             return false;
@@ -181,9 +172,7 @@ impl MeshBvh {
     /// Brute force with the same triangle test: every triangle, in the
     /// mesh's order, the closest kept. What the walk must agree with.
     pub fn brute_force(
-        &self,
-        ray: &Ray32,
-        interval: Interval,
+        &self, ray: &Ray32, interval: Interval,
     ) -> Option<MeshHit> {
         let mut uncounted = TraceCounts::default();
         MeshBruteForce(&self.all).closest_hit(ray, interval, &mut uncounted)
@@ -193,12 +182,8 @@ impl MeshBvh {
     /// The near-first walk of [`Bvh`](crate::Bvh)'s closest hit, over
     /// nodes of type `N` seen through `view` (their precision's test).
     fn closest<'a, N: 'a, V: SlabNode>(
-        &self,
-        nodes: &'a [N],
-        view: impl Fn(&'a N) -> V,
-        ray: &PreparedRay,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, nodes: &'a [N], view: impl Fn(&'a N) -> V, ray: &PreparedRay,
+        interval: Interval, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         let mut closest = Closest::new(interval);
         // Step 1: triangles outside the tree (none in a finite mesh).
@@ -257,12 +242,8 @@ impl MeshBvh {
 
     /// The any-hit walk: the same, stopped at the first triangle hit.
     fn any<'a, N: 'a, V: SlabNode>(
-        &self,
-        nodes: &'a [N],
-        view: impl Fn(&'a N) -> V,
-        ray: &PreparedRay,
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, nodes: &'a [N], view: impl Fn(&'a N) -> V, ray: &PreparedRay,
+        interval: Interval, counts: &mut TraceCounts,
     ) -> bool {
         for &id in &self.unbounded {
             if ray.blocked_by(&self.all[id as usize], interval, counts) {

@@ -65,10 +65,7 @@ impl PreparedRay {
     /// any-hit test, counted.
     #[inline]
     pub fn blocked_by(
-        &self,
-        v: &[DVec3; 3],
-        interval: Interval,
-        counts: &mut TraceCounts,
+        &self, v: &[DVec3; 3], interval: Interval, counts: &mut TraceCounts,
     ) -> bool {
         counts.triangles += 1;
         self.triangle(v, interval).is_some()
@@ -99,10 +96,7 @@ impl Closest {
     /// hit becomes the closest and ends the interval. Says whether it did.
     #[inline]
     pub fn test(
-        &mut self,
-        ray: &PreparedRay,
-        triangle: u32,
-        v: &[DVec3; 3],
+        &mut self, ray: &PreparedRay, triangle: u32, v: &[DVec3; 3],
         counts: &mut TraceCounts,
     ) -> bool {
         counts.triangles += 1;

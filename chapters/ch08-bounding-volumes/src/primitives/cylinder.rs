@@ -21,9 +21,7 @@ impl Cylinder {
     /// The cylinder around the segment `base`–`top`; refused unless the
     /// points are finite and distinct and the radius positive and finite.
     pub fn new(
-        base: DVec3,
-        top: DVec3,
-        radius: f64,
+        base: DVec3, top: DVec3, radius: f64,
     ) -> Result<Cylinder, String> {
         if !base.is_finite() {
             return Err(format!("base: must be finite, got {base}"));

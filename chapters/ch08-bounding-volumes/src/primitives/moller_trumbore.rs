@@ -9,9 +9,7 @@ use raystep_core::{DVec3, Interval, Ray};
 /// barycentric coordinates, so a ray through an edge shared by two
 /// triangles may hit both or neither (counted in `tests/watertight.rs`).
 pub fn moller_trumbore(
-    v: &[DVec3; 3],
-    ray: &Ray,
-    interval: Interval,
+    v: &[DVec3; 3], ray: &Ray, interval: Interval,
 ) -> Option<f64> {
     // Step 1: the edges from V₀, and the determinant det = E₁·(D × E₂).
     let e1 = v[1] - v[0];

@@ -59,8 +59,7 @@ impl Triangle {
     /// finite or the corners fix no plane (two coincide, or all three lie
     /// on a line).
     pub fn new(
-        vertices: [DVec3; 3],
-        test: TriangleTest,
+        vertices: [DVec3; 3], test: TriangleTest,
     ) -> Result<Triangle, String> {
         let [v0, v1, v2] = vertices;
         let plane = Plane::through(v0, v1, v2)

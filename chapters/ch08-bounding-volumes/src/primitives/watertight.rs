@@ -18,9 +18,7 @@ use crate::Shear;
 /// one triangle that owns the edge (chapter 2's tie rule), and at a shared
 /// vertex for one triangle of its fan: no ray hits twice either.
 pub fn watertight(
-    v: &[DVec3; 3],
-    ray: &Ray,
-    interval: Interval,
+    v: &[DVec3; 3], ray: &Ray, interval: Interval,
 ) -> Option<f64> {
     // Steps 1 and 2: the ray's axes and shear.
     let shear = Shear::of(ray.direction);
@@ -74,8 +72,7 @@ impl Shear {
 /// crate.)
 #[inline]
 pub(crate) fn sheared_hit(
-    sheared: [(DVec2, f64); 3],
-    interval: Interval,
+    sheared: [(DVec2, f64); 3], interval: Interval,
 ) -> Option<f64> {
     let [(a, za), (b, zb), (c, zc)] = sheared;
     // Step 4: the edge functions at the origin, each with an exact sign:

@@ -124,10 +124,7 @@ fn ball_along_ray(ball: &Ball, ray: &Ray) -> Vec<f64> {
 /// The first t in `interval` where the summed field along `ray` reaches
 /// `threshold`.
 fn first_crossing(
-    balls: &[Ball],
-    threshold: f64,
-    ray: &Ray,
-    interval: Interval,
+    balls: &[Ball], threshold: f64, ray: &Ray, interval: Interval,
 ) -> Option<f64> {
     // Step 1: where the line enters and leaves each ball's sphere (the
     // whole line, not only the interval: the pieces, and so the roots,

@@ -58,11 +58,7 @@ pub fn roots_in(c: &[f64], a: f64, b: f64) -> Vec<f64> {
 /// the bracket and shrink it fast, else bisection. Each step keeps the
 /// root bracketed, so the answer is never lost, only refined.
 fn newton_in_bracket(
-    c: &[f64],
-    dc: &[f64],
-    mut lo: f64,
-    mut hi: f64,
-    p_lo: f64,
+    c: &[f64], dc: &[f64], mut lo: f64, mut hi: f64, p_lo: f64,
 ) -> f64 {
     let mut t = 0.5 * (lo + hi);
     let mut step = hi - lo;

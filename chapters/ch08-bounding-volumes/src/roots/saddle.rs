@@ -88,10 +88,7 @@ fn saddle_normal(size: f64, p: DVec3) -> DVec3 {
 /// square, sorted: the bracketed method from the clip box's entry, on
 /// the line's whole stretch through the box, then cut to `interval`.
 fn saddle_roots(
-    size: f64,
-    ray: &Ray,
-    center: DVec3,
-    interval: Interval,
+    size: f64, ray: &Ray, center: DVec3, interval: Interval,
 ) -> Vec<f64> {
     // Step 1: clip the ray to the box, grown by 1% of s so that no root
     // sits on an end of the interval (where p ≈ 0 has no reliable sign).

@@ -38,11 +38,7 @@ impl Torus {
     /// The torus around `center` with this axis (any length but 0) and
     /// radii, solved by `solver`; an error names a bad parameter.
     pub fn new(
-        center: DVec3,
-        axis: DVec3,
-        major: f64,
-        minor: f64,
-        solver: TorusSolver,
+        center: DVec3, axis: DVec3, major: f64, minor: f64, solver: TorusSolver,
     ) -> Result<Torus, String> {
         if !center.is_finite() {
             return Err(format!("torus: center {center} must be finite"));
@@ -158,10 +154,7 @@ impl Torus {
 /// The closed form: the quartic from the ray's origin, wherever that is,
 /// and Ferrari's formula; the roots in `interval`. (Torus frame.)
 fn closed_form_roots(
-    major: f64,
-    minor: f64,
-    ray: &Ray,
-    interval: Interval,
+    major: f64, minor: f64, ray: &Ray, interval: Interval,
 ) -> Vec<f64> {
     let quartic = torus_quartic(major, minor, ray);
     let mut roots = quartic_roots(quartic);
@@ -173,10 +166,7 @@ fn closed_form_roots(
 // ANCHOR: bracketed_roots
 /// The bracketed method: the roots in `interval`, sorted. (Torus frame.)
 fn bracketed_roots(
-    major: f64,
-    minor: f64,
-    ray: &Ray,
-    interval: Interval,
+    major: f64, minor: f64, ray: &Ray, interval: Interval,
 ) -> Vec<f64> {
     // Step 1: clip the ray to the torus's box (axis-aligned in its own
     // frame), grown by 1% of r: there are no roots outside it. (The tight

@@ -118,10 +118,7 @@ type Value = dyn Fn(&CompareRow) -> f64;
 /// One panel of the comparison: a row per scene, a dot per method, the
 /// value on a log axis.
 fn dot_panel(
-    panel: &ChartArea,
-    rows: &[CompareRow],
-    desc: &str,
-    value: &Value,
+    panel: &ChartArea, rows: &[CompareRow], desc: &str, value: &Value,
     names: bool,
 ) -> Result<(), ChartError> {
     let dots = DotRows {

@@ -60,9 +60,7 @@ fn draw_lines(page: &mut Page, lattice: &Lattice, stroke: &Stroke) {
 
 /// A cell's square, filled.
 fn fill_cell(
-    page: &mut Page,
-    lattice: &Lattice,
-    cell: [usize; 3],
+    page: &mut Page, lattice: &Lattice, cell: [usize; 3],
     fill: raystep_figure::Fill,
 ) {
     let b = lattice.cell_box(cell);

@@ -108,10 +108,7 @@ pub fn families() -> Result<Vec<ChartScene>, String> {
 /// Runs `methods` on `scene`'s sets on one thread, rounds taking turns;
 /// an error if any method answers a ray unlike the first.
 pub fn run(
-    scene: &ChartScene,
-    sets: &[RaySet],
-    methods: &[Method],
-    repeats: usize,
+    scene: &ChartScene, sets: &[RaySet], methods: &[Method], repeats: usize,
     step: &mut dyn FnMut(),
 ) -> Result<Vec<MethodReport>, String> {
     let reports =
@@ -150,8 +147,7 @@ pub fn resolution_steps(repeats: usize) -> u64 {
 
 /// The resolution sweep on each family: build, memory and camera rays.
 pub fn measure_resolution(
-    repeats: usize,
-    step: &mut dyn FnMut(),
+    repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<ResolutionRow>, String> {
     let mut rows = Vec::new();
     for scene in families()? {
@@ -209,8 +205,7 @@ pub fn compare_steps(repeats: usize) -> u64 {
 /// exact fill) on the uniform family at three sizes, the bunny and the
 /// bunny in a stadium: build, trace, memory.
 pub fn measure_compare(
-    repeats: usize,
-    step: &mut dyn FnMut(),
+    repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<CompareRow>, String> {
     let bunny = bunny()?;
     let mut scenes: Vec<ChartScene> = UNIFORM_SIZES
@@ -303,8 +298,7 @@ pub fn mailbox_steps(repeats: usize) -> u64 {
 /// Each fill with the mailbox on and off, on each family's incoherent
 /// rays: tests, repeated tests (counted) and time (measured).
 pub fn measure_mailbox(
-    repeats: usize,
-    step: &mut dyn FnMut(),
+    repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<MailboxRow>, String> {
     let mut rows = Vec::new();
     for scene in families()? {
@@ -394,8 +388,7 @@ pub fn stability_steps(_repeats: usize) -> u64 {
 /// The stability catalogue over a million rays (counted, not timed; on
 /// every core): the grid against brute force, mailbox on and off.
 pub fn measure_stability(
-    _repeats: usize,
-    step: &mut dyn FnMut(),
+    _repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<StabilityRow>, String> {
     let bunny = bunny()?;
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());

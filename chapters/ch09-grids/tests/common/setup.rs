@@ -9,10 +9,7 @@ use proptest::prelude::*;
 /// What is wrong with `got` as the setup of `ray` within `interval`
 /// (`expected …, got …`), or None if it is right (t values to rounding).
 pub fn setup_fault(
-    lattice: &Lattice,
-    ray: &Ray,
-    interval: Interval,
-    got: Option<&Dda>,
+    lattice: &Lattice, ray: &Ray, interval: Interval, got: Option<&Dda>,
 ) -> Option<String> {
     // Step 1: the box clips the ray.
     let (inside, got) =

@@ -116,10 +116,7 @@ type Value = dyn Fn(&StructureRow) -> f64;
 /// One panel: a row per family, a dot per structure on a log axis; a
 /// ring around the rule's choice.
 fn dot_panel(
-    panel: &ChartArea,
-    rows: &[StructureRow],
-    desc: &str,
-    value: &Value,
+    panel: &ChartArea, rows: &[StructureRow], desc: &str, value: &Value,
     names: bool,
 ) -> Result<(), ChartError> {
     let dots = DotRows {

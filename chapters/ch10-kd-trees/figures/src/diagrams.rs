@@ -75,11 +75,7 @@ impl Thing {
 
     /// Draws it, filled and outlined.
     fn draw(
-        &self,
-        page: &mut Page,
-        offset: DVec2,
-        fill: Color,
-        stroke: &Stroke,
+        &self, page: &mut Page, offset: DVec2, fill: Color, stroke: &Stroke,
     ) {
         let fill = Some(fill.with_alpha(0.4));
         match *self {

@@ -59,8 +59,7 @@ pub fn build_steps(repeats: usize) -> u64 {
 /// Every builder at every size: milliseconds (medians, builders taking
 /// turns) and the trees they make.
 pub fn measure_build(
-    repeats: usize,
-    step: &mut dyn FnMut(),
+    repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<BuildRow>, String> {
     let mut rows = Vec::new();
     for n in BUILD_SIZES {
@@ -152,8 +151,7 @@ pub fn variants_steps(repeats: usize) -> u64 {
 /// watertight test, single-precision rays; every variant must answer
 /// every ray as the first does).
 pub fn measure_variants(
-    repeats: usize,
-    step: &mut dyn FnMut(),
+    repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<VariantRow>, String> {
     let scenes = [
         scene("bunny", bunny()?),
@@ -334,9 +332,7 @@ fn structure_bytes(structure: Structure, objects: &[Object]) -> usize {
 
 /// Closest hits of every ray, for timing.
 fn trace(
-    accelerator: &dyn Accelerator,
-    objects: &[Object],
-    rays: &[Ray],
+    accelerator: &dyn Accelerator, objects: &[Object], rays: &[Ray],
 ) -> usize {
     rays.iter()
         .filter(|ray| {
@@ -352,8 +348,7 @@ fn trace(
 /// and incoherent rays; every structure's answers checked against brute
 /// force on the rays brute force traces.
 pub fn measure_structures(
-    repeats: usize,
-    step: &mut dyn FnMut(),
+    repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<StructureRow>, String> {
     let mut rows = Vec::new();
     for family in families()? {
@@ -473,8 +468,7 @@ pub fn stability_steps(_repeats: usize) -> u64 {
 /// The catalogue over a million rays (counted, not timed; on every
 /// core): four trees against brute force.
 pub fn measure_stability(
-    _repeats: usize,
-    step: &mut dyn FnMut(),
+    _repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<StabilityRow>, String> {
     use rayon::prelude::*;
     let bunny = bunny()?;

@@ -72,8 +72,7 @@ pub fn steps(repeats: usize) -> u64 {
 /// Runs the comparison; an error if this raystep was built without the
 /// peers, or if one of ours answers a ray unlike the lecture's tree.
 pub fn measure_steps(
-    repeats: usize,
-    step: &mut dyn FnMut(),
+    repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<StepRow>, String> {
     let peers = Method::peers();
     if peers.is_empty() {
@@ -122,11 +121,8 @@ pub fn measure_steps(
 /// One method's row; an error if it is ours and answers any ray unlike
 /// the lecture's tree.
 fn row(
-    triangles: &[[DVec3; 3]],
-    method: &Method,
-    report: &MethodReport,
-    sets: &[RaySet],
-    threads: usize,
+    triangles: &[[DVec3; 3]], method: &Method, report: &MethodReport,
+    sets: &[RaySet], threads: usize,
 ) -> Result<StepRow, String> {
     let wrong: usize = report.sets.iter().map(|s| s.disagreements).sum();
     if method.is_ours() && wrong > 0 {

@@ -13,9 +13,7 @@ use raystep_core::{Aabb, DVec3};
 /// Rays at `triangles`: `camera`² camera rays and `incoherent` rays
 /// through their box (seed 11), rounded to `f32`.
 pub fn rays(
-    triangles: &[[DVec3; 3]],
-    camera: u32,
-    incoherent: usize,
+    triangles: &[[DVec3; 3]], camera: u32, incoherent: usize,
 ) -> Vec<Ray32> {
     let bounds = Aabb::around(triangles.iter().flatten().copied());
     let sphere = BoundingSphere::around_box(&bounds);

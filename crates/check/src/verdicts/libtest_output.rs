@@ -71,8 +71,7 @@ pub fn parse_output_in(stdout: &str, context: &Context) -> Output {
     // The failure section of one test ends: read its panic.
     fn close<'a>(
         section: &mut Option<(&'a str, Vec<&'a str>)>,
-        failures: &mut HashMap<&'a str, Failure>,
-        context: &Context,
+        failures: &mut HashMap<&'a str, Failure>, context: &Context,
     ) {
         if let Some((name, text)) = section.take() {
             failures.extend(failure(&text, context).map(|m| (name, m)));

@@ -126,8 +126,7 @@ impl fmt::Display for Report {
 /// `sources` holds the text of the `tests/*.rs` files by stem, to put
 /// failing tests in source order (otherwise, and for unit tests, by name).
 pub fn report(
-    exercises: &[String],
-    binaries: &[TestBinary],
+    exercises: &[String], binaries: &[TestBinary],
     sources: &HashMap<String, String>,
 ) -> Report {
     let is_exercise = |b: &TestBinary| matches!(&b.target, Target::Test(stem) if exercises.contains(stem));
@@ -194,9 +193,7 @@ fn source_position(source: Option<&str>, name: &str) -> usize {
 
 /// One exercise's verdict from its binaries' results.
 fn verdict(
-    exercise: &str,
-    binaries: &[&TestBinary],
-    source: Option<&str>,
+    exercise: &str, binaries: &[&TestBinary], source: Option<&str>,
 ) -> Verdict {
     if binaries.is_empty() {
         return Verdict::Failed(format!(

@@ -93,9 +93,7 @@ const CELLS_NAMED: usize = 3;
 /// tables, else the first line that differs. `None` if they agree (tables:
 /// cell by cell; other text: line by line, trailing spaces ignored).
 pub fn first_difference(
-    name: &str,
-    expected: &str,
-    got: &str,
+    name: &str, expected: &str, got: &str,
 ) -> Option<String> {
     match (SnapshotTable::parse(expected), SnapshotTable::parse(got)) {
         (Some(expected), Some(got)) => table_difference(name, &expected, &got),
@@ -106,9 +104,7 @@ pub fn first_difference(
 /// The first row of `got` whose cells differ from `expected`'s:
 /// ``snapshot t, row 3 (case "oblique"): result expected `hit`, got `miss` ``.
 pub fn table_difference(
-    name: &str,
-    expected: &SnapshotTable,
-    got: &SnapshotTable,
+    name: &str, expected: &SnapshotTable, got: &SnapshotTable,
 ) -> Option<String> {
     if expected.columns != got.columns {
         return Some(format!(
@@ -192,9 +188,7 @@ fn key_column(table: &SnapshotTable) -> usize {
 /// The first line that differs (trailing spaces ignored):
 /// ``snapshot render, line 5: expected `..A..`, got `..B..` ``.
 pub fn line_difference(
-    name: &str,
-    expected: &str,
-    got: &str,
+    name: &str, expected: &str, got: &str,
 ) -> Option<String> {
     let expected: Vec<&str> = expected.lines().map(str::trim_end).collect();
     let got: Vec<&str> = got.lines().map(str::trim_end).collect();

@@ -90,10 +90,7 @@ pub struct TestBinary {
 /// One binary's results from what it printed and how it ended, reading
 /// snapshot files and saying locations as `context` tells.
 pub fn test_binary_in(
-    target: Target,
-    stdout: &str,
-    ended: &Ended,
-    context: &Context,
+    target: Target, stdout: &str, ended: &Ended, context: &Context,
 ) -> TestBinary {
     let output = parse_output_in(stdout, context);
     let (crashed, timed_out) = match ended {
@@ -145,9 +142,7 @@ pub fn test_binary_in(
 /// running. If a test that reported is not among them the order was another
 /// (shuffled): only the tests libtest itself called slow are named then.
 pub fn still_running(
-    output: &Output,
-    listed: &[String],
-    threads: usize,
+    output: &Output, listed: &[String], threads: usize,
 ) -> Vec<String> {
     let reported: HashSet<&str> =
         output.results.iter().map(|r| r.name.as_str()).collect();

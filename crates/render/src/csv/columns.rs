@@ -22,17 +22,13 @@ impl<'de> Deserializer<'de> for FieldNames<'_> {
     type Error = de::value::Error;
 
     fn deserialize_any<V: Visitor<'de>>(
-        self,
-        _visitor: V,
+        self, _visitor: V,
     ) -> Result<V::Value, Self::Error> {
         Err(de::Error::custom("not a struct"))
     }
 
     fn deserialize_struct<V: Visitor<'de>>(
-        self,
-        _name: &'static str,
-        fields: &'static [&'static str],
-        _visitor: V,
+        self, _name: &'static str, fields: &'static [&'static str], _visitor: V,
     ) -> Result<V::Value, Self::Error> {
         *self.0 = Some(fields);
         Err(de::Error::custom("only the names were asked for"))
