@@ -60,16 +60,24 @@ impl FastRay {
 }
 
 impl FastRay {
+    /// A slab's two planes along `axis`, `lo` and `hi`, in the order the
+    /// ray meets them: (entry, exit). A ray toward −axis enters through
+    /// the max plane.
+    #[inline(always)]
+    pub fn entry_exit<T>(&self, axis: usize, lo: T, hi: T) -> (T, T) {
+        if self.negative[axis] == 1 {
+            (hi, lo)
+        } else {
+            (lo, hi)
+        }
+    }
+
     /// Chapter 8's slab test along `axis` for the slab `lo ≤ x ≤ hi`:
     /// where the ray enters it, and where it leaves it, widened. The
     /// scalar kernels' step for one box on one axis.
     #[inline(always)]
     pub fn slab(&self, axis: usize, lo: f32, hi: f32) -> (f32, f32) {
-        let (enter, exit) = if self.negative[axis] == 1 {
-            (hi, lo)
-        } else {
-            (lo, hi)
-        };
+        let (enter, exit) = self.entry_exit(axis, lo, hi);
         let o = self.origin[axis];
         let t0 = (enter - o) * self.inverse[axis];
         let t1 = (exit - o) * self.inverse[axis] * WIDEN;

@@ -25,11 +25,8 @@ pub fn boxes4(
         let mut far = _mm_set1_ps(t_max);
         let widen = _mm_set1_ps(WIDEN);
         for axis in 0..3 {
-            let (enter, exit) = if ray.negative[axis] == 1 {
-                (&node.hi[axis], &node.lo[axis])
-            } else {
-                (&node.lo[axis], &node.hi[axis])
-            };
+            let (enter, exit) =
+                ray.entry_exit(axis, &node.lo[axis], &node.hi[axis]);
             let enter = _mm_loadu_ps(enter.as_ptr());
             let exit = _mm_loadu_ps(exit.as_ptr());
             let o = _mm_set1_ps(ray.origin[axis]);

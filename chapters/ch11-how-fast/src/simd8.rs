@@ -75,11 +75,8 @@ unsafe fn boxes8(
         let mut near = _mm256_set1_ps(t_min);
         let mut far = _mm256_set1_ps(t_max);
         for axis in 0..3 {
-            let (enter, exit) = if ray.negative[axis] == 1 {
-                (&node.hi[axis], &node.lo[axis])
-            } else {
-                (&node.lo[axis], &node.hi[axis])
-            };
+            let (enter, exit) =
+                ray.entry_exit(axis, &node.lo[axis], &node.hi[axis]);
             let planes = (
                 _mm256_loadu_ps(enter.as_ptr()),
                 _mm256_loadu_ps(exit.as_ptr()),
@@ -156,11 +153,8 @@ unsafe fn compressed_boxes8(
         let mut near = _mm256_set1_ps(t_min);
         let mut far = _mm256_set1_ps(t_max);
         for axis in 0..3 {
-            let (enter, exit) = if ray.negative[axis] == 1 {
-                (&node.qhi[axis], &node.qlo[axis])
-            } else {
-                (&node.qlo[axis], &node.qhi[axis])
-            };
+            let (enter, exit) =
+                ray.entry_exit(axis, &node.qlo[axis], &node.qhi[axis]);
             let scale = _mm256_set1_ps(f32::from_bits(
                 ((i32::from(node.exponent[axis]) + 127) as u32) << 23,
             ));

@@ -172,6 +172,43 @@ pub fn legend(
     Ok(())
 }
 
+/// One series of a chart: the key its rows carry in the CSV, its name in
+/// the legend, its colour.
+#[derive(Clone, Copy, Debug)]
+pub struct Series {
+    /// What the rows of this series hold in their key column.
+    pub key: &'static str,
+    /// Its name in the legend.
+    pub name: &'static str,
+    /// Its colour.
+    pub colour: RGBColor,
+}
+
+impl Series {
+    /// The series `key`, shown as `name` in `colour`.
+    pub const fn new(
+        key: &'static str, name: &'static str, colour: RGBColor,
+    ) -> Series {
+        Series { key, name, colour }
+    }
+
+    /// The name of the series whose key is `key`, in `all`; `key` itself
+    /// if none has it.
+    pub fn name_of<'a>(all: &[Series], key: &'a str) -> &'a str {
+        all.iter().find(|s| s.key == key).map_or(key, |s| s.name)
+    }
+}
+
+/// The legend of `series` (their names and colours), as [`legend`]
+/// draws one.
+pub fn series_legend(
+    area: &ChartArea, series: &[Series], x: i32, spacing: i32,
+) -> Result<(), ChartError> {
+    let entries: Vec<(&str, RGBColor)> =
+        series.iter().map(|s| (s.name, s.colour)).collect();
+    legend(area, &entries, x, spacing)
+}
+
 /// A legend row of short lines with a dot on each and names, at the top
 /// of `area`, the names `px` tall: the legend of a chart of lines.
 pub fn line_legend(

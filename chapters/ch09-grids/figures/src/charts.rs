@@ -2,8 +2,8 @@
 //! measure` writes: the resolution sweep, the grid beside the hierarchy
 //! and brute force, and mailboxing.
 use raystep_figure::plots::{
-    BLUE, GREEN, GREY, ORANGE, legend, line_with_dots, log_log, log_range,
-    note, number_label, row_label,
+    BLUE, GREEN, GREY, ORANGE, Series, legend, line_with_dots, log_log,
+    log_range, note, number_label, row_label, series_legend,
 };
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::{
@@ -13,10 +13,10 @@ use raystep_figure::{
 use crate::rows::{BRUTE, BVH, CompareRow, GRID, MailboxRow, ResolutionRow};
 
 /// The scene families, their names in the charts and their colours.
-const FAMILIES: [(&str, &str, RGBColor); 3] = [
-    ("uniform-10000", "10 000 small triangles", BLUE),
-    ("bunny", "the bunny", GREEN),
-    ("stadium", "the bunny in a stadium", ORANGE),
+const FAMILIES: [Series; 3] = [
+    Series::new("uniform-10000", "10 000 small triangles", BLUE),
+    Series::new("bunny", "the bunny", GREEN),
+    Series::new("stadium", "the bunny in a stadium", ORANGE),
 ];
 
 /// Trace time and memory against the cells along the longest axis.
@@ -29,9 +29,7 @@ pub fn resolution_chart() -> Result<Figure, ChartError> {
         720,
         |area| {
             let (top, rest) = area.split_vertically(40);
-            let entries: Vec<(&str, RGBColor)> =
-                FAMILIES.iter().map(|(_, name, c)| (*name, *c)).collect();
-            legend(&top, &entries, 120, 250)?;
+            series_legend(&top, &FAMILIES, 120, 250)?;
             let (upper, lower) = rest.split_vertically(370);
             let x = log_range(rows.iter().map(|r| r.longest as f64));
             let draw = |panel: &ChartArea,
@@ -41,9 +39,9 @@ pub fn resolution_chart() -> Result<Figure, ChartError> {
              -> Result<(), ChartError> {
                 let y = log_range(rows.iter().map(value));
                 let mut c = log_log(panel, x.clone(), y, x_desc, y_desc)?;
-                for (scene, _, colour) in FAMILIES {
+                for Series { key, colour, .. } in FAMILIES {
                     let mut points: Vec<&ResolutionRow> =
-                        rows.iter().filter(|r| r.scene == scene).collect();
+                        rows.iter().filter(|r| r.scene == key).collect();
                     points.sort_by_key(|r| r.longest);
                     let line: Vec<(f64, f64)> = points
                         .iter()
@@ -141,10 +139,7 @@ fn dot_panel(
 
 /// The rows of the mailbox chart: scene and fill.
 fn mailbox_name(r: &MailboxRow) -> String {
-    let scene = FAMILIES
-        .iter()
-        .find(|(s, ..)| *s == r.scene)
-        .map_or(r.scene.as_str(), |(_, name, _)| name);
+    let scene = Series::name_of(&FAMILIES, &r.scene);
     format!("{scene}, {} fill", r.fill)
 }
 

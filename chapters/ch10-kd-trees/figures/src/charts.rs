@@ -2,8 +2,8 @@
 //! writes: build time against N, and which structure each scene family
 //! needs (totals for 1, 10³ and 10⁶ rays; what each costs).
 use raystep_figure::plots::{
-    BLUE, GREEN, GREY, ORANGE, legend, line_with_dots, log_log, log_range,
-    number_label, padded_log_range,
+    BLUE, GREEN, GREY, ORANGE, Series, line_with_dots, log_log, log_range,
+    number_label, padded_log_range, series_legend,
 };
 use raystep_figure::plotters::prelude::*;
 use raystep_figure::{
@@ -13,11 +13,11 @@ use raystep_figure::{
 use crate::rows::{BuildRow, StructureRow};
 
 /// The builders of the build chart, their names and colours.
-const BUILDERS: [(&str, &str, RGBColor); 4] = [
-    ("median", "median", GREY),
-    ("SAH sorting", "SAH, sorting at every node", ORANGE),
-    ("SAH events", "SAH, events sorted once", BLUE),
-    ("SAH events perfect", "the same, perfect splits", GREEN),
+const BUILDERS: [Series; 4] = [
+    Series::new("median", "median", GREY),
+    Series::new("SAH sorting", "SAH, sorting at every node", ORANGE),
+    Series::new("SAH events", "SAH, events sorted once", BLUE),
+    Series::new("SAH events perfect", "the same, perfect splits", GREEN),
 ];
 
 /// Build time against triangles, and the time per triangle.
@@ -30,18 +30,17 @@ pub fn build_chart() -> Result<Figure, ChartError> {
         700,
         |area| {
             let (top, rest) = area.split_vertically(70);
-            let entries: Vec<(&str, RGBColor)> =
-                BUILDERS.iter().map(|(_, n, c)| (*n, *c)).collect();
-            legend(&top.split_vertically(35).0, &entries[..2], 150, 330)?;
-            legend(&top.split_vertically(35).1, &entries[2..], 150, 330)?;
+            let (first, second) = top.split_vertically(35);
+            series_legend(&first, &BUILDERS[..2], 150, 330)?;
+            series_legend(&second, &BUILDERS[2..], 150, 330)?;
             let (upper, lower) = rest.split_vertically(330);
             let x = log_range(rows.iter().map(|r| r.triangles as f64));
             let y = log_range(rows.iter().map(|r| r.build_ms));
             let mut c = log_log(&upper, x.clone(), y, "", "build, ms")?;
-            for (name, _, colour) in BUILDERS {
+            for Series { key, colour, .. } in BUILDERS {
                 let line: Vec<(f64, f64)> = rows
                     .iter()
-                    .filter(|r| r.builder == name)
+                    .filter(|r| r.builder == key)
                     .map(|r| (r.triangles as f64, r.build_ms))
                     .collect();
                 line_with_dots(&mut c, &line, colour, 5)?;
@@ -62,10 +61,10 @@ pub fn build_chart() -> Result<Figure, ChartError> {
                 .axis_desc_style(font(15.0))
                 .light_line_style(WHITE)
                 .draw()?;
-            for (name, _, colour) in BUILDERS {
+            for Series { key, colour, .. } in BUILDERS {
                 let line: Vec<(f64, f64)> = rows
                     .iter()
-                    .filter(|r| r.builder == name)
+                    .filter(|r| r.builder == key)
                     .map(|r| (r.triangles as f64, per(r)))
                     .collect();
                 c.draw_series(LineSeries::new(
@@ -93,11 +92,11 @@ pub const FAMILIES: [(&str, &str); 7] = [
 ];
 
 /// The structures with their names and colours.
-const METHODS: [(&str, &str, RGBColor); 4] = [
-    ("brute", "brute force", GREY),
-    ("bvh", "BVH", BLUE),
-    ("grid", "grid", ORANGE),
-    ("kdtree", "kd-tree", GREEN),
+const METHODS: [Series; 4] = [
+    Series::new("brute", "brute force", GREY),
+    Series::new("bvh", "BVH", BLUE),
+    Series::new("grid", "grid", ORANGE),
+    Series::new("kdtree", "kd-tree", GREEN),
 ];
 
 /// An axis label that keeps small numbers: 0.0001, 0.01, 3, 12 000.
@@ -122,14 +121,14 @@ fn dot_panel(
     let dots = DotRows {
         names: &FAMILIES.map(|(_, name)| name),
         names_width: 200,
-        colours: &METHODS.map(|(_, _, colour)| colour),
+        colours: &METHODS.map(|s| s.colour),
         spacing: 8,
         x_labels: 4,
         x_label: &small_label,
     };
     let x = padded_log_range(rows.iter().map(value).filter(|v| *v > 0.0), 3.0);
     dots.panel(panel, desc, x, names, &|k, m| {
-        let (scene, method) = (FAMILIES[k].0, METHODS[m].0);
+        let (scene, method) = (FAMILIES[k].0, METHODS[m].key);
         let r = rows
             .iter()
             .find(|r| r.scene == scene && r.method == method)?;
@@ -138,9 +137,7 @@ fn dot_panel(
 }
 
 fn method_legend(top: &ChartArea) -> Result<(), ChartError> {
-    let entries: Vec<(&str, RGBColor)> =
-        METHODS.iter().map(|(_, n, c)| (*n, *c)).collect();
-    legend(top, &entries, 120, 150)?;
+    series_legend(top, &METHODS, 120, 150)?;
     top.draw(&Circle::new((735, 20), 11, BLACK.stroke_width(2)))?;
     top.draw(&Text::new("the rule's choice", (752, 11), font(16.0)))?;
     Ok(())
