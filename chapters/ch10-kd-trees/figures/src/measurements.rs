@@ -5,7 +5,6 @@
 //! workspace; the other scenes are the chapters' scene files or are
 //! generated from a seed.
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 
 use ch08::{BoundingSphere, Builder};
 use ch08_figures::bvh_measurements::ns;
@@ -18,7 +17,7 @@ use ch10::{
 };
 use raystep_bench::{
     KdSpec, Method, SCENE_SEED, incoherent, on_threads, on_threads_with_steps,
-    stadium, uniform_triangles,
+    stadium, triangle_objects, uniform_triangles,
 };
 use raystep_figure::as_jobs;
 use raystep_render::timing::Timing;
@@ -223,18 +222,6 @@ fn scene_file(path: &str) -> Result<Vec<Object>, String> {
                     .map_err(|e| format!("{path}: {e}"))?,
                 material: 0,
             })
-        })
-        .collect()
-}
-
-/// Triangles as objects.
-fn triangle_objects(triangles: &[[DVec3; 3]]) -> Vec<Object> {
-    triangles
-        .iter()
-        .filter_map(|t| ch08::mesh_triangle(*t))
-        .map(|t| Object {
-            shape: Arc::new(t),
-            material: 0,
         })
         .collect()
 }
