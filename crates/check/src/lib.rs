@@ -5,12 +5,14 @@
 //! still matches the reference's snapshot. For the same reason rendered
 //! images are compared with a [`Tolerance`] by [`assert_image_matches`].
 //! [`held_out`] holds the protocol of `raystep grade`'s held-out cases, and
+//! [`questions`] how it judges the paper questions, and
 //! [`verdicts`] how `raystep check` reads what the tests printed into one
 //! verdict per exercise.
 #![deny(missing_docs)]
 
 pub mod held_out;
 mod image_compare;
+pub mod questions;
 mod round;
 mod seeded;
 mod table;

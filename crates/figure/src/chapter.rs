@@ -2,6 +2,7 @@
 //! which `raystep figures`, `measure`, `render` and `check` all read.
 use std::fmt::Display;
 
+use raystep_check::questions::Question;
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
 use raystep_world::{Accelerate, World};
@@ -27,6 +28,13 @@ pub struct Chapter {
     /// The exercises, in lecture order: the file stems of `exercise/*.rs`,
     /// each judged by `tests/<stem>.rs`.
     pub exercises: &'static [&'static str],
+    /// Each exercise's difficulty, 1 to 3 stars, in the order of
+    /// `exercises`.
+    pub stars: &'static [u8],
+    /// The questions worked on paper, with the answers the chapter's code
+    /// computes (`raystep figures` writes them to `questions.toml` beside
+    /// the figures; `raystep check` judges from that file).
+    pub questions: fn() -> Vec<Question>,
     /// The lecture figures, drawn from the chapter's code.
     pub figures: fn() -> Vec<Figure>,
     /// The charts, each drawn from a CSV file a measurement wrote.
@@ -117,11 +125,38 @@ impl Chapter {
             title,
             package,
             exercises,
+            stars: &[],
+            questions: Vec::new,
             figures: Vec::new,
             charts: &[],
             measurements: &[],
             renderer: None,
         }
+    }
+
+    /// The same chapter with these difficulties (1 to 3 stars), one per
+    /// exercise in order.
+    pub const fn stars(self, stars: &'static [u8]) -> Chapter {
+        Chapter { stars, ..self }
+    }
+
+    /// The same chapter asking `questions` on paper.
+    pub const fn questions(self, questions: fn() -> Vec<Question>) -> Chapter {
+        Chapter { questions, ..self }
+    }
+
+    /// The difficulty of `exercise` (a code exercise or a paper question's
+    /// id), if it has one: `★★`.
+    pub fn difficulty(&self, exercise: &str) -> Option<String> {
+        let code = self.exercises.iter().position(|e| *e == exercise);
+        let stars = match code {
+            Some(i) => self.stars.get(i).copied(),
+            None => (self.questions)()
+                .iter()
+                .find(|q| q.id == exercise)
+                .map(|q| q.stars),
+        };
+        stars.map(raystep_check::questions::stars)
     }
 
     /// The same chapter drawing `figures`.

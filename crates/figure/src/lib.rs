@@ -68,6 +68,7 @@ pub use measured::{
 };
 /// plotters, re-exported so chapters draw charts with the kit's version.
 pub use plotters;
+pub use raystep_check::questions::{ChoiceQuestion, NumberQuestion, Question};
 pub use raystep_core::{DVec2, DVec3};
 
 pub use cli::diagram_main;

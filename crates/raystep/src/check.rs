@@ -30,7 +30,7 @@ use std::process::ExitCode;
 use std::time::Duration;
 
 use raystep_check::verdicts::{
-    BuildFailure, Report, Verdict, changed_snapshots,
+    BuildFailure, Label, Report, Verdict, changed_snapshots,
 };
 use raystep_figure::Chapter;
 
@@ -40,8 +40,8 @@ use crate::shown_path::relative;
 use crate::test_build::{Artifacts, build, cargo_program};
 use crate::test_run::run_built;
 use crate::{
-    atomic_file, chapters, compile_isolation, report_formats, submission_rules,
-    workspace,
+    atomic_file, chapters, compile_isolation, questions, report_formats,
+    submission_rules, workspace,
 };
 
 /// What `raystep check` was asked to do.
@@ -139,6 +139,22 @@ pub fn check_chapter(
     };
     if !run.reference {
         refuse_exercises(&mut report, &dir);
+    }
+    // The paper questions, judged from the answers file (no build).
+    let paper = questions::judge(root, chapter, run.reference)?;
+    for (exercise, _) in &report.exercises {
+        let stars = chapter.difficulty(exercise).unwrap_or_default();
+        let label = Label {
+            stars,
+            paper: false,
+        };
+        report.labels.insert(exercise.clone(), label);
+    }
+    for (question, verdict) in paper {
+        let stars = chapter.difficulty(&question).unwrap_or_default();
+        let label = Label { stars, paper: true };
+        report.labels.insert(question.clone(), label);
+        report.exercises.push((question, verdict));
     }
     report.changed_snapshots = changed_snapshots(&dir);
     report.package_dir = relative(&dir);

@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use crate::chapters::{CHAPTERS, find};
 use crate::error::Error;
 use crate::shown_path::{relative, shown};
-use crate::workspace;
+use crate::{atomic_file, questions, workspace};
 use raystep_figure::{Chapter, Format};
 
 /// What `raystep figures` was asked to do.
@@ -61,8 +61,25 @@ fn write(
         for path in &written {
             println!("{}", shown(path));
         }
-        total += written.len();
-        counts.push(format!("{id}: {}", written.len()));
+        let mut count = written.len();
+        // The paper questions, with the answers the code computes.
+        if let Some(file) = questions::from_code(chapter) {
+            let path = out.join(id).join("questions.toml");
+            atomic_file::write(
+                &path,
+                questions::text(chapter, &file).as_bytes(),
+            )?;
+            println!("{}", shown(&path));
+            count += 1;
+            // The answers' stub asks the same questions.
+            let root = workspace::root();
+            if let Some(stub) = questions::refresh_stub(&root, chapter, &file)?
+            {
+                println!("{}", shown(&relative(&stub)));
+            }
+        }
+        total += count;
+        counts.push(format!("{id}: {count}"));
     }
     println!(
         "wrote {total} {} into {} ({})",
@@ -82,11 +99,24 @@ fn check(
     for chapter in chapters {
         let figures = chapter.all_figures();
         expected += figures.len() * format.extensions().len();
-        mismatches.extend(raystep_figure::check_all(
-            &figures,
-            &out.join(chapter.id),
-            format,
-        )?);
+        mismatches.extend(
+            raystep_figure::check_all(&figures, &out.join(chapter.id), format)?
+                .iter()
+                .map(ToString::to_string),
+        );
+        if let Some(file) = questions::from_code(chapter) {
+            expected += 1;
+            let path = out.join(chapter.id).join("questions.toml");
+            match std::fs::read_to_string(&path) {
+                Ok(text) if text == questions::text(chapter, &file) => {}
+                Ok(_) => {
+                    mismatches.push(format!("differs: {}", path.display()))
+                }
+                Err(_) => {
+                    mismatches.push(format!("missing: {}", path.display()))
+                }
+            }
+        }
     }
     if mismatches.is_empty() {
         println!(

@@ -32,7 +32,8 @@ use crate::error::Error;
 use crate::run_options::Run;
 use crate::shown_path::{relative, shown};
 use crate::{
-    atomic_file, check, held_out, submission_rules, workspace, workspace_copy,
+    atomic_file, check, held_out, questions, submission_rules, workspace,
+    workspace_copy,
 };
 
 /// What `raystep grade` was asked to do.
@@ -101,8 +102,13 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     if let Some(path) = &options.json {
         atomic_file::can_write(path)?;
     }
-    let exercises: Vec<String> =
+    let code: Vec<String> =
         chapter.exercises.iter().map(|e| e.to_string()).collect();
+    // The table's columns: the code exercises, then the paper questions.
+    let mut exercises = code.clone();
+    if let Some(file) = questions::read(&root, chapter)? {
+        exercises.extend(file.questions.iter().map(|q| q.id.clone()));
+    }
 
     let instructor = root.join("chapters").join(chapter.package);
     // The stubs as committed: an instructor trying the exercises in
@@ -162,7 +168,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     let mut rows = Vec::new();
     for (i, (name, folder)) in students.iter().enumerate() {
         eprintln!("[{}/{}] {name}", i + 1, students.len());
-        let submission = submission(folder, &exercises);
+        let submission = submission(folder, &code);
         ignored.extend(submission.ignored.iter().map(|file| Ignored {
             student: name.clone(),
             file: file.clone(),
@@ -177,7 +183,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
             &copy,
             chapter,
             &stubs,
-            &submission.files,
+            &submission,
             &run,
             judge.as_ref(),
         )?;
@@ -260,13 +266,16 @@ fn students(submissions: &Path) -> Result<(Vec<Student>, Vec<Ignored>), Error> {
 pub struct Submission {
     /// Exercise name → its file.
     pub files: BTreeMap<String, PathBuf>,
+    /// The answers to the paper questions, if handed in.
+    pub answers: Option<PathBuf>,
     /// Every other file, relative to the student's folder, sorted.
     pub ignored: Vec<String>,
 }
 
 /// The exercise files in a student's folder: `exercise/<e>.rs`, else
-/// `<e>.rs`, for each exercise `e` of the chapter. Every other file is
-/// ignored (and listed).
+/// `<e>.rs`, for each exercise `e` of the chapter, and the answers to the
+/// paper questions, `exercise/answers.toml` else `answers.toml`. Every
+/// other file is ignored (and listed).
 pub fn submission(folder: &Path, exercises: &[String]) -> Submission {
     let mut found = Submission::default();
     let mut all: Vec<String> = walkdir::WalkDir::new(folder)
@@ -294,6 +303,14 @@ pub fn submission(folder: &Path, exercises: &[String]) -> Submission {
             all.retain(|f| f != file);
         }
     }
+    let answers = [
+        format!("exercise/{}", questions::ANSWERS),
+        questions::ANSWERS.to_string(),
+    ];
+    if let Some(file) = answers.iter().find(|c| all.contains(c)) {
+        found.answers = Some(folder.join(file));
+        all.retain(|f| f != file);
+    }
     found.ignored = all;
     found
 }
@@ -312,12 +329,13 @@ struct Judge<'a> {
 }
 
 /// Checks one student's files in the scratch workspace `copy`; the
-/// chapter's `exercise/` (its committed `stubs`) and `tests/snapshots/`
-/// (from `root`) are put back first.
+/// chapter's `exercise/` (its committed `stubs`, the stub of the answers)
+/// and `tests/snapshots/` (from `root`) are put back first.
 fn grade_student(
     root: &Path, copy: &Path, chapter: &Chapter, stubs: &Stubs,
-    files: &BTreeMap<String, PathBuf>, run: &Run, judge: Option<&Judge>,
+    submission: &Submission, run: &Run, judge: Option<&Judge>,
 ) -> Result<Vec<(String, Verdict)>, Error> {
+    let files = &submission.files;
     let instructor = root.join("chapters").join(chapter.package);
     let scratch = copy.join("chapters").join(chapter.package);
     for folder in ["exercise", "tests/snapshots"] {
@@ -327,6 +345,7 @@ fn grade_student(
         )?;
     }
     stubs.write(copy, chapter, false)?;
+    questions::write_stub(copy, chapter)?;
     let stub = |exercise: &str| -> Result<(), Error> {
         let to = scratch.join("exercise").join(format!("{exercise}.rs"));
         fs::write(&to, stubs.text(chapter, exercise))
@@ -381,6 +400,28 @@ fn grade_student(
                         ),
                     ),
                 );
+            }
+        }
+    }
+
+    // The answers to the paper questions: data, judged without running
+    // anything (`check` reads at most 64 KiB of them).
+    let answers_file = format!("exercise/{}", questions::ANSWERS);
+    match &submission.answers {
+        Some(file) => {
+            let to = scratch.join(&answers_file);
+            if let Err(error) = fs::copy(file, &to) {
+                let why = format!("{}: {error}", file.display());
+                for question in paper_questions(copy, chapter)? {
+                    settled
+                        .insert(question, ("missing file".into(), why.clone()));
+                }
+            }
+        }
+        None => {
+            for question in paper_questions(copy, chapter)? {
+                let why = format!("no {answers_file} (not attempted)");
+                settled.insert(question, ("missing file".into(), why));
             }
         }
     }
@@ -443,6 +484,15 @@ fn grade_student(
             (exercise, row)
         })
         .collect())
+}
+
+/// The ids of the chapter's paper questions in the workspace at `copy`.
+fn paper_questions(
+    copy: &Path, chapter: &Chapter,
+) -> Result<Vec<String>, Error> {
+    Ok(questions::read(copy, chapter)?
+        .map(|file| file.questions.into_iter().map(|q| q.id).collect())
+        .unwrap_or_default())
 }
 
 /// When no error names a file: the submitted exercises that do not compile
@@ -574,6 +624,7 @@ mod tests {
         let dir = folder_with(&[
             "exercise/ray_plane.rs",
             "ray_plane.rs",
+            "answers.toml",
             "inside_polygon.rs",
             "notes.txt",
             "exercise/other.rs",
@@ -596,6 +647,7 @@ mod tests {
                 ),
             ])
         );
+        assert_eq!(found.answers, Some(student.join("answers.toml")));
         assert_eq!(
             found.ignored,
             ["exercise/other.rs", "notes.txt", "ray_plane.rs"]

@@ -29,6 +29,7 @@ mod held_out;
 mod limited_process;
 mod measure;
 mod process_group;
+mod questions;
 mod reference_module;
 mod render;
 mod report_formats;

@@ -51,6 +51,11 @@ struct JsonReport<'a> {
 #[derive(Serialize)]
 struct JsonExercise {
     exercise: String,
+    /// `code` (an exercise file) or `paper` (a question answered in
+    /// `exercise/answers.toml`).
+    kind: &'static str,
+    /// The difficulty, 1 to 3 stars, if known.
+    stars: Option<usize>,
     /// `passed`, `failed`, `not attempted`, `timed out`, `does not compile`
     /// or `cargo failed`.
     verdict: &'static str,
@@ -100,6 +105,16 @@ pub fn json(heading: &Heading, report: &Report) -> String {
             .iter()
             .map(|(exercise, verdict)| JsonExercise {
                 exercise: exercise.clone(),
+                kind: if report.labels.get(exercise).is_some_and(|l| l.paper) {
+                    "paper"
+                } else {
+                    "code"
+                },
+                stars: report
+                    .labels
+                    .get(exercise)
+                    .map(|l| l.stars.chars().count())
+                    .filter(|n| *n > 0),
                 verdict: verdict.kind(),
                 message: verdict.message(),
             })
@@ -150,7 +165,7 @@ fn cases(report: &Report) -> Vec<Case> {
         .exercises
         .iter()
         .map(|(exercise, verdict)| Case {
-            name: exercise.clone(),
+            name: report.shown_name(exercise),
             failure: (*verdict != Verdict::Passed)
                 .then(|| (verdict.kind(), verdict.to_string())),
         })
@@ -286,6 +301,7 @@ mod tests {
     use super::*;
     use raystep_check::verdicts::{
         BuildFailure, CargoFailure, Change, ChangedSnapshot, CompileError,
+        Label,
     };
 
     const HEADING: Heading = Heading {
@@ -307,7 +323,26 @@ mod tests {
                             .into(),
                     ),
                 ),
+                (
+                    "q1".into(),
+                    Verdict::Failed(
+                        "question 1, t expected about 4 (your 4.4 is off by \
+                         10 %)"
+                            .into(),
+                    ),
+                ),
             ],
+            labels: [
+                ("ray_plane", "★", false),
+                ("inside_polygon", "★★", false),
+                ("q1", "★", true),
+            ]
+            .into_iter()
+            .map(|(e, stars, paper)| {
+                let stars = stars.to_string();
+                (e.to_string(), Label { stars, paper })
+            })
+            .collect(),
             other_passed: 3,
             other_waiting: 2,
             other_failed: Vec::new(),
@@ -333,13 +368,28 @@ mod tests {
                 "mode": "student",
                 "passed": false,
                 "exercises": [
-                    {"exercise": "ray_plane", "verdict": "passed", "message": null},
+                    {
+                        "exercise": "ray_plane",
+                        "kind": "code",
+                        "stars": 1,
+                        "verdict": "passed",
+                        "message": null
+                    },
                     {
                         "exercise": "inside_polygon",
+                        "kind": "code",
+                        "stars": 2,
                         "verdict": "failed",
                         "message": "inside_table (tests/inside_polygon.rs:17): snapshot \
                             inside_table, row 2 (point \"a <b> & 'c'\"): f1 expected `4`, \
                             got `-4`\u{1b}"
+                    },
+                    {
+                        "exercise": "q1",
+                        "kind": "paper",
+                        "stars": 1,
+                        "verdict": "failed",
+                        "message": "question 1, t expected about 4 (your 4.4 is off by 10 %)"
                     }
                 ],
                 "other_tests": {"passed": 3, "waiting": 2, "failed": []},
@@ -357,8 +407,8 @@ mod tests {
         assert_eq!(
             xml,
             r#"<?xml version="1.0" encoding="UTF-8"?>
-<testsuites name="raystep check" tests="3" failures="2">
-  <testsuite name="ch02-plane-polygon-hits" tests="3" failures="2" errors="0" skipped="0">
+<testsuites name="raystep check" tests="4" failures="3">
+  <testsuite name="ch02-plane-polygon-hits" tests="4" failures="3" errors="0" skipped="0">
     <properties>
       <property name="chapter" value="ch02"/>
       <property name="mode" value="student"/>
@@ -366,6 +416,9 @@ mod tests {
     <testcase classname="ch02-plane-polygon-hits" name="ray_plane"/>
     <testcase classname="ch02-plane-polygon-hits" name="inside_polygon">
       <failure type="failed" message="failed: inside_table (tests/inside_polygon.rs:17): snapshot inside_table, row 2 (point &quot;a &lt;b&gt; &amp; &apos;c&apos;&quot;): f1 expected `4`, got `-4`�">failed: inside_table (tests/inside_polygon.rs:17): snapshot inside_table, row 2 (point &quot;a &lt;b&gt; &amp; &apos;c&apos;&quot;): f1 expected `4`, got `-4`�</failure>
+    </testcase>
+    <testcase classname="ch02-plane-polygon-hits" name="q1 (paper)">
+      <failure type="failed" message="failed: question 1, t expected about 4 (your 4.4 is off by 10 %)">failed: question 1, t expected about 4 (your 4.4 is off by 10 %)</failure>
     </testcase>
     <testcase classname="ch02-plane-polygon-hits" name="other tests">
       <failure type="not attempted" message="3 passed, 2 wait for your exercises (todo!())">3 passed, 2 wait for your exercises (todo!())</failure>
@@ -398,7 +451,7 @@ restore them: git checkout -- chapters/ch02/tests/snapshots/a.snap</system-err>
                 _ => {}
             }
         }
-        assert_eq!(messages.len(), 2);
+        assert_eq!(messages.len(), 3);
         assert!(messages[0].contains("(point \"a <b> & 'c'\")"));
     }
 

@@ -11,7 +11,10 @@
 //! then run on the student's own chapter 1.
 //!
 //! The held-out programs of `raystep grade` (`examples/chNN_held_out.rs`)
-//! are left out.
+//! are left out. The paper questions stay, without their answers and
+//! worked solutions: each answer is kept as digests, which `check` judges
+//! with as it would with the answer (`raystep_check::questions`); the
+//! answers file is its stub.
 //!
 //! The copy is made in a temporary folder beside OUT and renamed to OUT
 //! when complete, so OUT is never left half written.
@@ -26,7 +29,7 @@ use raystep_figure::Chapter;
 use crate::committed_stubs::{self, Stubs};
 use crate::error::Error;
 use crate::shown_path::shown;
-use crate::{chapters, git, workspace, workspace_copy};
+use crate::{chapters, git, questions, workspace, workspace_copy};
 
 /// Runs `raystep student-edition OUT`.
 pub fn run(out: &Path) -> Result<ExitCode, Error> {
@@ -95,6 +98,9 @@ pub fn export(
         stubs.write(partial.path(), chapter, true)?;
         chain_exercise_feature(partial.path(), chapter, chapters)?;
         drop_held_out(partial.path(), chapter)?;
+        // The paper questions stay, their answers go (digests judge).
+        questions::drop_answers(partial.path(), chapter)?;
+        questions::write_stub(partial.path(), chapter)?;
     }
     let git = commit(partial.path())?;
     // The rename replaces an empty OUT; a non-empty one (made meanwhile)

@@ -87,13 +87,16 @@ fn raystep(
     )
 }
 
-/// The verdict printed for `exercise`: the text after its name.
+/// The verdict printed for `exercise`: the text after its name (and
+/// its difficulty).
 fn verdict<'a>(report: &'a str, stderr: &str, exercise: &str) -> &'a str {
     report
         .lines()
         .find_map(|line| {
             let rest = line.strip_prefix("  ")?.strip_prefix(exercise)?;
-            rest.starts_with(' ').then(|| rest.trim())
+            let rest = rest.strip_prefix(" (paper)").unwrap_or(rest);
+            rest.starts_with(' ')
+                .then(|| rest.trim().trim_start_matches('★').trim_start())
         })
         .unwrap_or_else(|| {
             panic!("no line for exercise {exercise} in:\n{report}{stderr}")
@@ -116,6 +119,14 @@ fn the_reference_passes_and_the_stubs_do_not() {
             "{report}"
         );
         assert!(ok, "{chapter} --reference failed:\n{report}{stderr}");
+        // Every chapter with exercises asks two paper questions or more:
+        // the reference answers pass, the untouched stub attempts none.
+        let questions = ["q1", "q2"];
+        if !exercises.is_empty() {
+            for q in questions {
+                assert_eq!(verdict(&report, &stderr, q), "passed", "{report}");
+            }
+        }
 
         let (ok, report, stderr) = check(&[&chapter]);
         for exercise in &exercises {
@@ -124,6 +135,12 @@ fn the_reference_passes_and_the_stubs_do_not() {
                 verdict == "not attempted" || verdict.starts_with("failed: "),
                 "{chapter}: the stub of {exercise} is {verdict:?}:\n{report}{stderr}"
             );
+        }
+        if !exercises.is_empty() {
+            for q in questions {
+                let verdict = verdict(&report, &stderr, q);
+                assert_eq!(verdict, "not attempted", "{chapter}:\n{report}");
+            }
         }
         assert_eq!(
             ok,

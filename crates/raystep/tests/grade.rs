@@ -94,13 +94,27 @@ fn each_submission_gets_its_verdicts() {
         &[
             ("exercise/line_through_points.rs", line.clone()),
             ("plane_through_points.rs", plane.clone()),
+            // The paper questions: a choice and a number, both right.
+            ("answers.toml", "q1 = \"Negative\"\nq2 = -0.82\n".into()),
         ],
     );
     // wrong: the line's constant c with its minus sign dropped.
     with_plane("wrong", edited(&line, "c = -normal", "c = normal"));
     write_all(
         &submissions.join("wrong"),
-        &[("notes.txt", "my notes".to_string())],
+        &[
+            ("notes.txt", "my notes".to_string()),
+            // A wrong choice, and a number 10 % off.
+            (
+                "exercise/answers.toml",
+                "q1 = \"positive\"\nq2 = -0.9\n".into(),
+            ),
+        ],
+    );
+    // looping answers one question, and leaves the other as the stub has it.
+    write_all(
+        &submissions.join("looping"),
+        &[("answers.toml", "q1 = \"todo\"\nq2 = -0.81\n".into())],
     );
     // looping: the line's eval never returns.
     with_plane(
@@ -293,39 +307,68 @@ fn deeper(x: f64) -> f64 {
     );
     assert_eq!(table["held_out_seed"], 2026, "{context}");
 
-    // Students in name order, two rows each; the CSV holds the same table.
+    // The paper questions: right, wrong, off by more than the step,
+    // untouched, and not handed in.
+    for question in ["q1", "q2"] {
+        assert_eq!(verdict("right", question).0, "passed", "{context}");
+        assert_eq!(
+            verdict("missing", question),
+            (
+                "missing file".to_string(),
+                "no exercise/answers.toml (not attempted)".to_string()
+            ),
+            "{context}"
+        );
+    }
+    assert_eq!(
+        verdict("wrong", "q1"),
+        (
+            "failed".to_string(),
+            "question 1, expected \"negative\" (your answer \"positive\")"
+                .to_string()
+        ),
+        "{context}"
+    );
+    assert_eq!(
+        verdict("wrong", "q2"),
+        (
+            "failed".to_string(),
+            "question 2, f(O) expected about -0.82 (your -0.9 is off by 10 %)"
+                .to_string()
+        ),
+        "{context}"
+    );
+    assert_eq!(verdict("looping", "q1").0, "not attempted", "{context}");
+    assert_eq!(verdict("looping", "q2").0, "passed", "{context}");
+
+    // Students in name order, four rows each (two exercises, two paper
+    // questions); the CSV holds the same table.
     let students: Vec<&str> = rows
         .iter()
         .map(|r| r["student"].as_str().unwrap())
         .collect();
-    assert_eq!(
-        students,
-        [
-            "broken",
-            "broken",
-            "forger",
-            "forger",
-            "include",
-            "include",
-            "looping",
-            "looping",
-            "missing",
-            "missing",
-            "oracle",
-            "oracle",
-            "path",
-            "path",
-            "quiet-forger",
-            "quiet-forger",
-            "right",
-            "right",
-            "wrong",
-            "wrong"
-        ]
-    );
+    let names = [
+        "broken",
+        "forger",
+        "include",
+        "looping",
+        "missing",
+        "oracle",
+        "path",
+        "quiet-forger",
+        "right",
+        "wrong",
+    ];
+    let expected: Vec<&str> = names.iter().flat_map(|n| [*n; 4]).collect();
+    assert_eq!(students, expected);
+    let exercises: Vec<&str> = rows[..4]
+        .iter()
+        .map(|r| r["exercise"].as_str().unwrap())
+        .collect();
+    assert_eq!(exercises, [line, plane, "q1", "q2"]);
     let csv_text = fs::read_to_string(&csv).unwrap();
     assert!(csv_text.starts_with("student,exercise,verdict,message\n"));
-    assert_eq!(csv_text.lines().count(), 21, "{csv_text}");
+    assert_eq!(csv_text.lines().count(), 41, "{csv_text}");
     assert_eq!(
         table["ignored"],
         serde_json::json!([{"student": "wrong", "file": "notes.txt"}])

@@ -182,6 +182,19 @@ fn no_reference_body_is_in_the_export() {
         .filter(|path| path.to_string_lossy().ends_with("_held_out.rs"))
         .collect();
     assert!(held_out.is_empty(), "{held_out:?}");
+    // The paper questions are handed out without their answers and worked
+    // solutions (digests stand in for them), every chapter's.
+    let question_files: Vec<&(PathBuf, String)> = exported
+        .iter()
+        .filter(|(path, _)| path.ends_with("questions.toml"))
+        .collect();
+    assert_eq!(question_files.len(), 10);
+    for (path, text) in question_files {
+        for gone in ["\nanswer =", "\nworked ="] {
+            assert!(!text.contains(gone), "{}: {gone}", path.display());
+        }
+        assert!(text.contains("\ndigests = ["), "{}", path.display());
+    }
     for (chapter, exercise) in exercises() {
         // The reference module: the one `src/**/<exercise>.rs`.
         let src = PathBuf::from(format!("chapters/{chapter}/src"));
@@ -468,6 +481,10 @@ fn verdict<'a>(report: &'a str, exercise: &str) -> &'a str {
         .find_map(|l| l.trim_start().strip_prefix(&format!("{exercise} ")))
         .unwrap_or_else(|| panic!("no {exercise} in:\n{report}"))
         .trim()
+        .trim_start_matches("(paper)")
+        .trim_start()
+        .trim_start_matches('★')
+        .trim()
 }
 
 /// `raystep check ch01` in the export: every exercise is the untouched
@@ -489,9 +506,45 @@ fn check_in_the_export() {
     assert!(!report.contains("failed"), "{all}");
     assert!(!report.contains("warning"), "{all}");
 
+    // The paper questions are asked without their answers, and judged as
+    // in the instructor's workspace: untouched, right, wrong, off by more
+    // than the step.
+    let chapter = "chapters/ch01-implicit-lines-planes";
+    let questions =
+        fs::read_to_string(export.join("book/src/figures/ch01/questions.toml"))
+            .unwrap();
+    assert!(questions.contains("[[question]]"), "{questions}");
+    for gone in ["answer =", "worked =", "negative\"\n"] {
+        assert!(!questions.contains(gone), "{gone}: {questions}");
+    }
+    for q in ["q1", "q2"] {
+        assert_eq!(verdict(&report, q), "not attempted", "{all}");
+    }
+    let answers = export.join(chapter).join("exercise/answers.toml");
+    let answers_stub = fs::read_to_string(&answers).unwrap();
+    fs::write(&answers, "q1 = \"negative\"\nq2 = -0.82\n").unwrap();
+    let (ok, report, stderr) = raystep(&["check", "ch01", "--quiet"], export);
+    let all = format!("{report}{stderr}");
+    assert!(!ok, "{all}");
+    assert_eq!(verdict(&report, "q1"), "passed", "{all}");
+    assert_eq!(verdict(&report, "q2"), "passed", "{all}");
+    fs::write(&answers, "q1 = \"positive\"\nq2 = -0.9\n").unwrap();
+    let (_, report, stderr) = raystep(&["check", "ch01", "--quiet"], export);
+    fs::write(&answers, &answers_stub).unwrap();
+    let all = format!("{report}{stderr}");
+    assert_eq!(
+        verdict(&report, "q1"),
+        "failed: question 1: \"positive\" is not the answer",
+        "{all}"
+    );
+    assert_eq!(
+        verdict(&report, "q2"),
+        "failed: question 2, f(O): your -0.9 is not within 0.01 of the answer",
+        "{all}"
+    );
+
     // The reference with its constant's minus sign dropped, in the
     // student's file; insta told to accept and to pass everything.
-    let chapter = "chapters/ch01-implicit-lines-planes";
     let file = export.join(chapter).join("exercise/line_through_points.rs");
     let stub = fs::read_to_string(&file).unwrap();
     let reference = fs::read_to_string(

@@ -2,6 +2,7 @@
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
 mod diagrams;
+mod questions;
 
 use raystep_figure::Chapter;
 
@@ -11,4 +12,6 @@ pub const CHAPTER: Chapter = Chapter::new(
     "Implicit lines and planes",
     &["line_through_points", "plane_through_points"],
 )
+.stars(&[1, 1])
+.questions(questions::all)
 .figures(diagrams::all);

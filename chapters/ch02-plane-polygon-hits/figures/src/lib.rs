@@ -11,4 +11,5 @@ pub const CHAPTER: Chapter = Chapter::new(
     "Plane and polygon hits",
     &["ray_plane", "inside_polygon"],
 )
+.stars(&[1, 2])
 .figures(diagrams::all);

@@ -11,6 +11,7 @@ pub const CHAPTER: Chapter = Chapter::new(
     "Illumination",
     &["sphere_hit", "reflect", "local_shading"],
 )
+.stars(&[2, 1, 2])
 .figures(diagrams::all)
 // `raystep render` with chapter 3's tracer: the local model, every light
 // visible

@@ -10,6 +10,7 @@ use raystep_figure::{Chapter, measurement, render_world};
 /// What chapter 4 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter =
     Chapter::new("ch04-shadows", "Shadows", &["shadow", "normal_offset"])
+        .stars(&[2, 2])
         .figures(diagrams::all)
         .charts(&[charts::acne_chart])
         .measurements(&[measurement!(

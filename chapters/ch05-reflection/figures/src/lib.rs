@@ -13,6 +13,7 @@ pub const CHAPTER: Chapter = Chapter::new(
     "Reflection",
     &["reflection", "recursion"],
 )
+.stars(&[1, 2])
 .figures(diagrams::all)
 .charts(&[charts::stopping_chart])
 .measurements(&[measurement!(

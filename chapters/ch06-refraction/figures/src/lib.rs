@@ -12,6 +12,7 @@ use raystep_world::World;
 /// What chapter 6 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter =
     Chapter::new("ch06-refraction", "Refraction", &["refraction", "schlick"])
+        .stars(&[2, 1])
         .figures(diagrams::all)
         .charts(&[diagrams::reflectance_chart, charts::fresnel_chart])
         .measurements(&[measurement!(

@@ -13,6 +13,7 @@ pub const CHAPTER: Chapter = Chapter::new(
     "Two rendering methods",
     &["coverage", "depth_test"],
 )
+.stars(&[2, 1])
 .figures(diagrams::all)
 .charts(&[charts::scaling_chart])
 .measurements(&[measurement!(

@@ -32,6 +32,7 @@ pub const CHAPTER: Chapter = Chapter::new(
         "near_first",
     ],
 )
+.stars(&[2, 3, 3, 2, 2, 3])
 .figures(diagrams::all)
 .charts(&[
     charts::costs_chart,

@@ -16,6 +16,7 @@ pub use scene_files::{
 /// What chapter 9 hands `raystep figures`, `measure`, `render` and `check`.
 pub const CHAPTER: Chapter =
     Chapter::new("ch09-grids", "Grids", &["dda_setup", "walk"])
+        .stars(&[2, 3])
         .figures(diagrams::all)
         .charts(&[
             charts::resolution_chart,

@@ -14,6 +14,7 @@ pub const CHAPTER: Chapter = Chapter::new(
     "kd-trees",
     &["split_cost", "traversal_step"],
 )
+.stars(&[2, 3])
 .figures(diagrams::all)
 .charts(&[
     charts::build_chart,

@@ -29,7 +29,7 @@ pub use build_failure::{
 pub use libtest_output::{
     Failure, Outcome, Output, TestResult, parse_list, parse_output_in,
 };
-pub use report::{Report, report};
+pub use report::{Label, Report, report};
 pub use run_context::{Context, lexically_normal};
 pub use snapshot_changes::{
     Change, ChangedSnapshot, advice, changed_snapshots,

@@ -2,7 +2,7 @@
 //! binary, the chapter's other tests counted, and the snapshot files that
 //! are not the reference named.
 
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 use std::fmt;
 use std::path::PathBuf;
 
@@ -16,8 +16,13 @@ use super::verdict::Verdict;
 /// and the snapshot files that are not the reference.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct Report {
-    /// Each exercise and its verdict, in the order given.
+    /// Each exercise and its verdict, in the order given: the code
+    /// exercises, then the paper questions.
     pub exercises: Vec<(String, Verdict)>,
+    /// What the table says of each exercise besides its verdict (its
+    /// difficulty, whether it is worked on paper), by name; none is shown
+    /// for an exercise missing here.
+    pub labels: BTreeMap<String, Label>,
     /// Other tests (unit tests, tests of no exercise) that passed.
     pub other_passed: usize,
     /// Other tests that stopped at a `todo!()`: they wait for the exercises.
@@ -38,7 +43,35 @@ pub struct Report {
     pub held_out_runner: Option<PathBuf>,
 }
 
+/// What the table says of an exercise besides its verdict.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct Label {
+    /// The difficulty: `★`, `★★` or `★★★`.
+    pub stars: String,
+    /// A question worked on paper (answered in `exercise/answers.toml`),
+    /// not code.
+    pub paper: bool,
+}
+
+impl Label {
+    /// The exercise's name as the table shows it: `q1 (paper)`.
+    pub fn name(&self, exercise: &str) -> String {
+        if self.paper {
+            format!("{exercise} (paper)")
+        } else {
+            exercise.to_string()
+        }
+    }
+}
+
 impl Report {
+    /// The name of `exercise` as the table shows it.
+    pub fn shown_name(&self, exercise: &str) -> String {
+        self.labels
+            .get(exercise)
+            .map_or_else(|| exercise.to_string(), |l| l.name(exercise))
+    }
+
     /// The report when nothing could be built: every exercise says why.
     pub fn not_built(exercises: &[String], failure: BuildFailure) -> Report {
         Report {
@@ -92,14 +125,32 @@ impl fmt::Display for Report {
             let width = self
                 .exercises
                 .iter()
-                .map(|(e, _)| e.len())
+                .map(|(e, _)| self.shown_name(e).chars().count())
                 .chain([OTHER.len()])
                 .max()
                 .unwrap_or(0);
+            // The difficulty column, when the exercises have one.
+            let stars = self
+                .labels
+                .values()
+                .map(|l| l.stars.chars().count())
+                .max()
+                .unwrap_or(0);
+            // `name  ★★   verdict`: the stars left-aligned in their column.
+            let column = if stars > 0 { stars + 2 } else { 0 };
             for (exercise, verdict) in &self.exercises {
-                writeln!(f, "  {exercise:width$}  {verdict}")?;
+                let name = self.shown_name(exercise);
+                let level = self.labels.get(exercise).map_or("", |l| &l.stars);
+                let pad = width - name.chars().count() + 2;
+                let after = column - level.chars().count();
+                writeln!(
+                    f,
+                    "  {name}{:pad$}{level}{:after$}{verdict}",
+                    "", ""
+                )?;
             }
-            writeln!(f, "  {OTHER:width$}  {}", self.other_tests())?;
+            let pad = width - OTHER.len() + 2 + column;
+            writeln!(f, "  {OTHER}{:pad$}{}", "", self.other_tests())?;
         }
         for line in
             snapshot_changes::advice(&self.changed_snapshots, &self.package_dir)
@@ -109,15 +160,28 @@ impl fmt::Display for Report {
         if self.build_failure.is_some() {
             return Ok(());
         }
-        let passed = self
-            .exercises
-            .iter()
-            .filter(|(_, v)| *v == Verdict::Passed)
-            .count();
-        if self.exercises.is_empty() {
-            writeln!(f, "this chapter has no exercises")
-        } else {
-            writeln!(f, "{passed} of {} exercises passed", self.exercises.len())
+        let count = |paper: bool| {
+            let of_kind: Vec<&Verdict> = self
+                .exercises
+                .iter()
+                .filter(|(e, _)| {
+                    self.labels.get(e).is_some_and(|l| l.paper) == paper
+                })
+                .map(|(_, v)| v)
+                .collect();
+            let passed = of_kind.iter().filter(|v| ***v == Verdict::Passed);
+            (passed.count(), of_kind.len())
+        };
+        let (code, code_of) = count(false);
+        let (paper, paper_of) = count(true);
+        match (code_of, paper_of) {
+            (0, 0) => writeln!(f, "this chapter has no exercises"),
+            (_, 0) => writeln!(f, "{code} of {code_of} exercises passed"),
+            _ => writeln!(
+                f,
+                "{code} of {code_of} exercises and {paper} of {paper_of} \
+                 paper questions passed"
+            ),
         }
     }
 }
