@@ -11,6 +11,9 @@
 //!   figure's SVG notes its smallest text, the page gives its displayed
 //!   width);
 //! - a listing wider than its box (a horizontal scrollbar);
+//! - a line of Rust in the prose (a paragraph, list item, table cell or
+//!   heading, its inline `code` left out): a listing that lost its fence
+//!   (the shapes judged are in [`raystep_tests::rust_in_prose`]);
 //! - an exercise's solution fold that is open.
 //!
 //! CI runs it after `raystep book` (see `.ci/run`):
@@ -28,6 +31,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use devtools::{Chromium, Tab};
+use raystep_tests::rust_in_prose;
 use serde::Deserialize;
 use serde_json::{Value, json};
 
@@ -196,6 +200,8 @@ struct Seen {
     includes: usize,
     fonts: Vec<FontFace>,
     wide_listings: Vec<String>,
+    /// The text of each block of prose, without its code and math.
+    prose: Vec<String>,
     solutions: usize,
     open_solutions: usize,
     code_blocks: usize,
@@ -313,6 +319,18 @@ fn problems(book: &Path, seen: &Seen) -> Vec<String> {
     for first_line in &seen.wide_listings {
         found.push(format!("listing wider than the column: {first_line}"));
     }
+    let mut rust: Vec<&str> = seen
+        .prose
+        .iter()
+        .filter_map(|text| rust_in_prose::rust_line(text))
+        .collect();
+    rust.dedup();
+    for line in rust {
+        let line: String = line.chars().take(72).collect();
+        found.push(format!(
+            "Rust in the prose (a listing outside a code block?): {line}"
+        ));
+    }
     if seen.open_solutions > 0 {
         found.push(format!("{} solution folds open", seen.open_solutions));
     }
@@ -333,6 +351,17 @@ const INSPECT: &str = r#"
     dollars.push(text.slice(Math.max(0, i - 30), i + 30).replace(/\s+/g, ' '));
   }
   const maths = [...main.querySelectorAll('math')];
+  // The text of each block of prose (a paragraph, list item, table cell,
+  // heading…), without its inline code, math and listings.
+  const blocks = new Map();
+  const walk = document.createTreeWalker(main, NodeFilter.SHOW_TEXT);
+  for (let node = walk.nextNode(); node; node = walk.nextNode()) {
+    const parent = node.parentElement;
+    if (parent.closest('pre, code, kbd, samp, math, script, style')) continue;
+    const block = parent.closest('p, li, td, th, dt, dd, h1, h2, h3, h4, '
+      + 'h5, h6, figcaption, summary, blockquote, details, div, main');
+    blocks.set(block, (blocks.get(block) || '') + node.data);
+  }
   return JSON.stringify({
     images: [...main.querySelectorAll('img:not(.img-wrapper img)')].map(i => ({
       src: i.getAttribute('src'),
@@ -349,6 +378,7 @@ const INSPECT: &str = r#"
     wideListings: [...main.querySelectorAll('pre')]
       .filter(p => p.scrollWidth > p.clientWidth + 1)
       .map(p => p.textContent.trim().split('\n')[0].slice(0, 60)),
+    prose: [...blocks.values()].filter(text => text.trim()),
     solutions: main.querySelectorAll('details.solution').length,
     openSolutions: main.querySelectorAll('details.solution[open]').length,
     codeBlocks: main.querySelectorAll('pre code').length,

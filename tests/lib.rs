@@ -1,1 +1,3 @@
-//! Helpers shared by the cross-chapter tests (none yet).
+//! Helpers shared by the cross-chapter tests and the browser check.
+
+pub mod rust_in_prose;

@@ -30,6 +30,14 @@ impl Include<'_> {
     pub fn selector(&self) -> &str {
         self.argument.split_once(':').map_or("", |(_, s)| s)
     }
+
+    /// Whether it includes a Markdown fragment (`.md`), part of the text
+    /// (the stability appendix's table); any other file is a listing.
+    pub fn is_markdown(&self) -> bool {
+        Path::new(self.path())
+            .extension()
+            .is_some_and(|x| x.eq_ignore_ascii_case("md"))
+    }
 }
 
 /// The include directives of a line. Escaped ones (`\{{#include …}}`) are
@@ -241,5 +249,17 @@ impl A {
         assert_eq!(found.len(), 1);
         assert_eq!((found[0].path(), found[0].selector()), ("a.rs", "x"));
         assert_eq!(&line[found[0].start..found[0].end], "{{#include a.rs:x}}");
+    }
+
+    #[test]
+    fn only_markdown_fragments_are_text() {
+        let kinds: Vec<bool> = includes(
+            "{{#include t.md}} {{#include a.rs:x}} {{#include s.toml}} \
+             {{#include T.MD:2:3}} {{#include md}}",
+        )
+        .iter()
+        .map(Include::is_markdown)
+        .collect();
+        assert_eq!(kinds, [true, false, false, true, false]);
     }
 }

@@ -6,15 +6,23 @@
 //!
 //! 1. **Listings.** `{{#include file:anchor}}` is expanded as mdBook would,
 //!    but the region loses its common indentation (a method from an `impl`
-//!    block starts at column 0).
+//!    block starts at column 0). A listing stands in a fenced code block
+//!    (```` ``` ```` or `~~~`, indented too, as in a list item); an include
+//!    anywhere else is refused, since Markdown would run its lines together
+//!    into prose. Only a Markdown fragment (`.md`, the stability table) is
+//!    included into the text. A block indented four spaces without a fence
+//!    does not count: in a list item those lines are the item's text.
 //! 2. **Exercises.** A listing that is an exercise's region (a file
 //!    `chapters/<ch>/src/<e>.rs` with a stub `chapters/<ch>/exercise/<e>.rs`)
 //!    shows the stub: its signature, docs and the lecture step it asks for.
 //!    The reference code follows inside a closed `<details class="solution">`
 //!    fold, never in the open.
-//! 3. **Math.** `$…$` in running text and `$$…$$` on lines of their own are
+//! 3. **Questions.** `{{#question q1}}` on a line of its own states a paper
+//!    question from the chapter's `figures/chNN/questions.toml`, its worked
+//!    answer in a closed fold ([`question`]).
+//! 4. **Math.** `$…$` in running text and `$$…$$` on lines of their own are
 //!    LaTeX, typeset as MathML ([`math`]).
-//! 4. **Numbers.** `3.7 %`, `160 × 90` and `39 171` are never split at a
+//! 5. **Numbers.** `3.7 %`, `160 × 90` and `39 171` are never split at a
 //!    line end ([`typography`]).
 //!
 //! Every error names the page and line.
@@ -22,6 +30,7 @@
 mod error;
 pub mod include;
 pub mod math;
+pub mod question;
 pub mod typography;
 
 use std::path::Path;
@@ -72,6 +81,21 @@ pub fn preprocess(page: &Path, text: &str) -> Result<String, BookError> {
             i += 1;
             continue;
         }
+        if let Some(id) = question::directive(trimmed) {
+            // A paper question, from the chapter's questions.toml.
+            let block = question::render(dir, page, id).map_err(fail)?;
+            for block_line in block.lines() {
+                push(&mut out, &math::inline(block_line).map_err(fail)?);
+            }
+            i += 1;
+            continue;
+        }
+        if let Some(listing) = include::includes(line)
+            .into_iter()
+            .find(|d| !d.is_markdown())
+        {
+            return Err(fail(outside_a_fence(&listing)));
+        }
         if trimmed.starts_with("$$") {
             // A displayed equation: up to the line that ends with `$$`.
             let last = (i..lines.len())
@@ -102,6 +126,18 @@ pub fn preprocess(page: &Path, text: &str) -> Result<String, BookError> {
 fn push(out: &mut String, line: &str) {
     out.push_str(line);
     out.push('\n');
+}
+
+/// Why a listing may not stand in the text: Markdown would run its lines
+/// together into a paragraph of prose.
+fn outside_a_fence(listing: &include::Include) -> String {
+    format!(
+        "{{{{#{} {}}}}} is outside a fenced code block, so its lines would \
+         show as prose: put it on a line of its own between ```rust,ignore \
+         (or ```text) and ``` (only a Markdown fragment, .md, belongs in \
+         the text)",
+        listing.directive, listing.argument
+    )
 }
 
 /// The fence a line opens (```` ``` ```` or `~~~`, any longer run included).
@@ -262,6 +298,75 @@ mod tests {
             out.contains(r#"<div class="equation"><math display="block">"#)
         );
         assert!(out.contains("```text\n$x$\n```"), "{out}");
+    }
+
+    /// The page `text` gives with the chapter of [`chapter`] around it.
+    fn preprocessed(name: &str, text: &str) -> Result<String, BookError> {
+        let root = scratch(name);
+        let page = chapter(&root);
+        fs::write(root.join("book/src/table.md"), "| a |\n|---|\n| 1 |\n")
+            .unwrap();
+        let out = preprocess(&page, text);
+        fs::remove_dir_all(root).unwrap();
+        out
+    }
+
+    /// The listing of [`chapter`]'s `plain.rs` (which shows `fn g() {}`).
+    const G: &str = "{{#include ../../chapters/ch99/src/plain.rs:g}}";
+
+    #[test]
+    fn a_listing_outside_a_fence_is_refused_naming_page_and_line() {
+        let text = format!("# Page\n\nThe walk:\n\n{G}\n\nMore.\n");
+        let error = preprocessed("prose", &text).unwrap_err();
+        assert!(error.page.ends_with("book/src/page.md"), "{error}");
+        assert_eq!(error.line, 5, "{error}");
+        assert!(error.message.contains("plain.rs:g"), "{error}");
+        assert!(error.message.contains("outside a fenced code block"));
+        // In running text, and any file: a listing of a scene or a mesh too.
+        for line in [
+            "See {{#include ../../chapters/ch99/src/ex.rs:f}} here.",
+            "{{#include ../../chapters/ch99/scenes/a.toml}}",
+            "{{#rustdoc_include ../../chapters/ch99/src/ex.rs}}",
+            "- {{#include ../../shared/meshes/quad.obj}}",
+        ] {
+            let error =
+                preprocessed("any", &format!("a\n{line}\n")).unwrap_err();
+            assert_eq!(error.line, 2, "{line}: {error}");
+            assert!(error.message.contains("outside a fenced"), "{error}");
+        }
+    }
+
+    #[test]
+    fn a_listing_in_a_rust_fence_passes() {
+        let text = format!("Text.\n\n```rust,ignore\n{G}\n```\n");
+        let out = preprocessed("fenced", &text).unwrap();
+        assert_eq!(out, "Text.\n\n```rust,ignore\nfn g() {}\n```\n");
+    }
+
+    #[test]
+    fn a_listing_in_a_tilde_or_list_item_fence_passes() {
+        // `~~~` and a fence indented into a list item are code blocks too.
+        let text = format!(
+            "~~~rust\n{G}\n~~~\n\n1. The walk:\n\n   ```rust\n   {G}\n   ```\n"
+        );
+        let out = preprocessed("tilde", &text).unwrap();
+        assert_eq!(out, text.replace(G, "fn g() {}"));
+    }
+
+    #[test]
+    fn a_listing_indented_without_a_fence_is_refused() {
+        // Four spaces are code only outside a list; in an item they are its
+        // text, so a listing needs a fence.
+        let text = format!("- The walk:\n\n    {G}\n");
+        let error = preprocessed("indented", &text).unwrap_err();
+        assert_eq!(error.line, 3, "{error}");
+    }
+
+    #[test]
+    fn a_markdown_fragment_is_included_into_the_text() {
+        let text = "## Table\n\n{{#include table.md}}\n";
+        let out = preprocessed("fragment", text).unwrap();
+        assert_eq!(out, "## Table\n\n| a |\n|---|\n| 1 |\n");
     }
 
     #[test]
