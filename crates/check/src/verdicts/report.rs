@@ -121,6 +121,13 @@ impl fmt::Display for Report {
         const OTHER: &str = "other tests";
         if let Some(build) = &self.build_failure {
             writeln!(f, "  {}", build.failure)?;
+            // The paper questions are judged without a build.
+            for (exercise, verdict) in &self.exercises {
+                if self.labels.get(exercise).is_some_and(|l| l.paper) {
+                    let name = self.shown_name(exercise);
+                    writeln!(f, "  {name}  {verdict}")?;
+                }
+            }
         } else {
             let width = self
                 .exercises

@@ -554,3 +554,52 @@ fn a_timed_out_other_binary_is_an_other_failure() {
     let binary = test_binary(Target::Test("x".into()), "", &unknown);
     assert_eq!(binary.timed_out.unwrap().to_string(), "timed out after 3 s");
 }
+
+/// With labels the table shows each exercise's difficulty and marks the
+/// paper questions, and the last line counts the two kinds apart; a
+/// chapter that did not build still shows its paper questions.
+#[test]
+fn the_table_shows_difficulty_and_paper_questions() {
+    let label = |stars: &str, paper: bool| Label {
+        stars: stars.into(),
+        paper,
+    };
+    let mut report = Report {
+        exercises: vec![
+            ("ray_plane".into(), Verdict::Passed),
+            (
+                "q1".into(),
+                Verdict::Failed(
+                    "question 1, t expected about 4 (your 4.4 is off by 10 %)"
+                        .into(),
+                ),
+            ),
+            ("q2".into(), Verdict::Passed),
+        ],
+        labels: [
+            ("ray_plane".to_string(), label("★", false)),
+            ("q1".to_string(), label("★★", true)),
+            ("q2".to_string(), label("★★★", true)),
+        ]
+        .into(),
+        other_passed: 2,
+        ..Report::default()
+    };
+    assert_eq!(
+        report.to_string(),
+        "  ray_plane    ★    passed\n\
+        \x20 q1 (paper)   ★★   failed: question 1, t expected about 4 (your 4.4 is off by 10 %)\n\
+        \x20 q2 (paper)   ★★★  passed\n\
+        \x20 other tests       2 passed\n\
+        1 of 1 exercises and 1 of 2 paper questions passed\n"
+    );
+    report.build_failure = Some(BuildFailure {
+        failure: CargoFailure::DoesNotCompile(
+            "the tests do not compile".into(),
+        ),
+        errors: Vec::new(),
+    });
+    let text = report.to_string();
+    assert!(text.contains("\n  q2 (paper)  passed\n"), "{text}");
+    assert!(!text.contains("ray_plane"), "{text}");
+}
