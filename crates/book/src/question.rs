@@ -9,7 +9,7 @@
 
 use std::path::Path;
 
-use raystep_check::questions::{Question, Questions, chapter_number};
+use raystep_check::questions::{Question, Questions};
 
 /// The question id of a `{{#question ID}}` line, if the line is one.
 pub fn directive(trimmed: &str) -> Option<&str> {
@@ -64,14 +64,13 @@ fn block(chapter: &str, q: &Question) -> String {
     let number = q.id.trim_start_matches('q');
     let mut text = format!(
         "<div class=\"question\">\n\n**Question {number}** ({}, on paper): \
-         *{}.* {}\n\n*Answer* in `exercise/answers.toml` as `{} = …`: {}. \
-         `raystep check {chapter}` judges it (chapter {}).\n",
+         *{}.* {}\n\n*Answer* in `exercise/answers.toml` as `{} = …`: {}; \
+         `raystep check {chapter}` judges it.\n",
         q.difficulty(),
         q.title,
         one_line(&q.prompt),
         q.id,
         q.form(),
-        chapter_number(chapter),
     );
     if let Some(worked) = &q.worked {
         text.push_str(&format!(
@@ -132,7 +131,7 @@ worked = "$t = 4$."
              The ray meets the plane $z = 4$: what is $t$?"
         ));
         assert!(text.contains(
-            "as `q1 = …`: a number, to within 0.01. `raystep check ch02`"
+            "as `q1 = …`: a number, to within 0.01; `raystep check ch02`"
         ));
         assert!(text.contains("<details class=\"solution\">"));
         assert!(text.contains("\n$t = 4$.\n"));
