@@ -1,4 +1,4 @@
-//! Exercise 1: the implicit line through two points.
+//! Exercise 1 (★): the implicit line through two points.
 //!
 //! Fill in the three functions below; `cargo run --release -- check ch01` (or
 //! `cargo test -p ch01-implicit-lines-planes --features exercise`) judges them.

@@ -1,4 +1,4 @@
-//! Exercise 2: the implicit plane through three points.
+//! Exercise 2 (★): the implicit plane through three points.
 //!
 //! Fill in the two functions below; `cargo run --release -- check ch01` judges them.
 use crate::{COLLINEAR_SINE, Degenerate, Plane};

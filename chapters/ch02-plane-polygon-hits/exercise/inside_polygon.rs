@@ -1,4 +1,4 @@
-//! Exercise 2: the edge test for a convex polygon.
+//! Exercise 2 (★★): the edge test for a convex polygon.
 //!
 //! Fill in both functions; `cargo run --release -- check ch02` judges them.
 use crate::owns_boundary;

@@ -1,4 +1,4 @@
-//! Exercise 1: where a ray meets a plane.
+//! Exercise 1 (★): where a ray meets a plane.
 //!
 //! Fill in `ray_plane`; `cargo run --release -- check ch02` judges it.
 use crate::{RayPlane, zero_within_rounding};

@@ -1,4 +1,4 @@
-//! Exercise 3: the lecture's local illumination model.
+//! Exercise 3 (★★): the lecture's local illumination model.
 //!
 //! Fill in `shading_terms`; `cargo run --release -- check ch03` judges it.
 use crate::{LightSample, ShadingTerms, reflect_light};

@@ -1,4 +1,4 @@
-//! Exercise 2: the reflection of the light direction.
+//! Exercise 2 (★): the reflection of the light direction.
 //!
 //! Fill in `reflect_light`; `cargo run --release -- check ch03` judges it.
 use raystep_core::DVec3;

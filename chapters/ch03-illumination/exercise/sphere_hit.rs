@@ -1,4 +1,4 @@
-//! Exercise 1: where a ray meets a sphere.
+//! Exercise 1 (★★): where a ray meets a sphere.
 //!
 //! Fill in `intersect`; `cargo run --release -- check ch03` judges it.
 use crate::Sphere;

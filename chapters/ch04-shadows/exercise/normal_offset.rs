@@ -1,4 +1,4 @@
-//! Exercise 2: the shadow ray lifted off the surface along the normal.
+//! Exercise 2 (★★): the shadow ray lifted off the surface along the normal.
 //!
 //! Fill in `normal_offset_ray`; `cargo run --release -- check ch04` judges it.
 use raystep_core::{DVec3, Interval, Ray};

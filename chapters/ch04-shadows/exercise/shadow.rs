@@ -1,4 +1,4 @@
-//! Exercise 1: Sᵢ, whether a hit point sees a light.
+//! Exercise 1 (★★): Sᵢ, whether a hit point sees a light.
 //!
 //! Fill in `shadow`; `cargo run --release -- check ch04` judges it.
 use crate::{Offset, occluded, shadow_ray};

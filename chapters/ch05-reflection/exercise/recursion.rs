@@ -1,4 +1,4 @@
-//! Exercise 2: the recursive tracer with both stopping rules.
+//! Exercise 2 (★★): the recursive tracer with both stopping rules.
 // You will need: crate::reflect_ray, ch04::offset_scale_aware.
 use crate::{Path, Tracer};
 use raystep_core::{DVec3, Ray};

@@ -1,4 +1,4 @@
-//! Exercise 1: the direction of the reflected ray.
+//! Exercise 1 (★): the direction of the reflected ray.
 use raystep_core::DVec3;
 
 // ANCHOR: reflect_ray

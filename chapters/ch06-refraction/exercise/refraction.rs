@@ -1,4 +1,4 @@
-//! Exercise 1: the refracted direction, by Snell's law.
+//! Exercise 1 (★★): the refracted direction, by Snell's law.
 use raystep_core::DVec3;
 
 // ANCHOR: refract

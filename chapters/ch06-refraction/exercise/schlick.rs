@@ -1,4 +1,4 @@
-//! Exercise 2: Schlick's approximation of the Fresnel reflectance.
+//! Exercise 2 (★): Schlick's approximation of the Fresnel reflectance.
 
 // ANCHOR: schlick
 /// Schlick's approximation of [`fresnel`](crate::fresnel):

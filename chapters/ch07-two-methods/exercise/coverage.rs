@@ -1,4 +1,4 @@
-//! Exercise 1: does a triangle on screen cover a sample point? Edge
+//! Exercise 1 (★★): does a triangle on screen cover a sample point? Edge
 //! functions (chapter 1's implicit lines, as chapter 2 evaluates them)
 //! and a fill rule for points exactly on an edge.
 #![allow(unused_imports)]

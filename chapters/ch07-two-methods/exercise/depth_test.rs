@@ -1,4 +1,4 @@
-//! Exercise 2: the z-buffer's depth test.
+//! Exercise 2 (★): the z-buffer's depth test.
 
 use crate::DepthBuffer;
 

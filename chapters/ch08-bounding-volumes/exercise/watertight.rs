@@ -18,15 +18,23 @@ use crate::Shear;
 /// A ray exactly on an edge (an edge function exactly 0) counts for the
 /// one triangle that owns the edge (chapter 2's tie rule), and at a shared
 /// vertex for one triangle of its fan: no ray hits twice either.
+///
+/// A ray with a NaN or an infinity hits nothing, and neither does a ray
+/// lying in the triangle's plane (the paper's det = 0).
 pub fn watertight(
     v: &[DVec3; 3], ray: &Ray, interval: Interval,
 ) -> Option<f64> {
+    // TODO:
+    // 0. A NaN or an infinity anywhere in the ray's origin or direction:
+    //    no hit, return None before the shear (which would turn an
+    //    infinite direction into 0s: every corner at z = 0, a hit at
+    //    t = 0).
     // Steps 1 and 2: the ray's axes and shear.
     let shear = Shear::of(ray.direction);
     // Step 3: each vertex sheared.
     let sheared = v.map(|vertex| shear.vertex(ray.origin, vertex));
     // Steps 4–7.
-    sheared_hit(sheared, interval)
+    sheared_hit(sheared, &shear, interval)
 }
 // ANCHOR_END: watertight
 
@@ -60,23 +68,27 @@ impl Shear {
 
 // ANCHOR: sheared_hit
 /// Steps 4–7 of [`watertight`]: the hit `t`, if the origin of the xy plane
-/// lies inside the sheared triangle (each corner as its `(x, y)` across
-/// the ray and its `z` along it). Chapter 8's fast walk shears each ray's
-/// triangles itself (steps 1–3 once per ray) and then asks this.
+/// lies inside the triangle `sheared` by `shear` (each corner as its
+/// `(x, y)` across the ray and its `z` along it). Chapter 8's fast walk
+/// shears each ray's triangles itself (steps 1–3 once per ray) and then
+/// asks this.
 pub(crate) fn sheared_hit(
-    sheared: [(DVec2, f64); 3], interval: Interval,
+    sheared: [(DVec2, f64); 3], shear: &Shear, interval: Interval,
 ) -> Option<f64> {
     // TODO:
     // 4. The edge functions at the origin, with `edge_function`:
     //    e0 for b → c, e1 for c → a, e2 for a → b.
     // 5. None if some eᵢ > 0 and some eᵢ < 0 (outside), or if
-    //    det = e0 + e1 + e2 is 0 (seen edge-on) or not finite.
+    //    det = e0 + e1 + e2 is not finite, or if it is 0: the ray lies in
+    //    the triangle's plane (seen edge-on), a miss. The shear rounds the
+    //    corners, so for such a ray det is rounding noise rather than 0:
+    //    count |det| ≤ `shear.det_rounding(&sheared)` as 0.
     // 6. For each eᵢ == 0 the ray is on that edge: None unless the
     //    triangle owns it, `owns_boundary(from, to)` (chapter 2's tie
     //    rule) with the edge walked as listed if det > 0, reversed if
     //    det < 0 (the ray sees the triangle clockwise).
     // 7. t = (e0·za + e1·zb + e2·zc) / det, if the interval contains it.
-    let _ = (sheared, interval, edge_function);
+    let _ = (sheared, shear, interval, edge_function);
     todo!("ch08 exercise 2: watertight")
 }
 // ANCHOR_END: sheared_hit

@@ -1,4 +1,4 @@
-//! Exercise 1: the 3D DDA's setup (Amanatides and Woo, "A fast voxel
+//! Exercise 1 (★★): the 3D DDA's setup (Amanatides and Woo, "A fast voxel
 //! traversal algorithm for ray tracing", 1987): the first cell, and per
 //! axis how far along the ray the next plane between cells is (`t_max`)
 //! and how far apart those planes are (`t_delta`).

@@ -1,4 +1,4 @@
-//! Exercise 2: the DDA's stepping loop. From the cell the ray is in, the
+//! Exercise 2 (★★★): the DDA's stepping loop. From the cell the ray is in, the
 //! next cell is the neighbour across the plane the ray meets first: the
 //! axis with the smallest `t_max`. One comparison and one addition per
 //! cell, as a rasterizer steps from pixel to pixel by adding a constant.

@@ -1,4 +1,4 @@
-//! Exercise 1: the SAH cost of one split plane.
+//! Exercise 1 (★★): the SAH cost of one split plane.
 use raystep_core::Aabb;
 
 use crate::KdCosts;

@@ -1,4 +1,4 @@
-//! Exercise 2: one step of the front-to-back traversal.
+//! Exercise 2 (★★★): one step of the front-to-back traversal.
 #[allow(unused_imports)]
 use ch09::EXIT_SLACK;
 

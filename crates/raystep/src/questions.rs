@@ -209,9 +209,11 @@ mod tests {
     }
 
     /// Each chapter lists one difficulty per exercise, of one to three
-    /// stars.
+    /// stars, and the exercise's stub says it in its first line
+    /// (`//! Exercise 2 (★★): …`).
     #[test]
     fn every_exercise_has_a_difficulty() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
         for chapter in CHAPTERS {
             assert_eq!(
                 chapter.stars.len(),
@@ -221,7 +223,20 @@ mod tests {
             );
             assert!(chapter.stars.iter().all(|s| (1..=3).contains(s)));
             for exercise in chapter.exercises {
-                assert!(chapter.difficulty(exercise).is_some());
+                let stars = chapter.difficulty(exercise).unwrap();
+                let stub = root
+                    .join("chapters")
+                    .join(chapter.package)
+                    .join("exercise")
+                    .join(format!("{exercise}.rs"));
+                let text = std::fs::read_to_string(&stub).unwrap();
+                let first = text.lines().next().unwrap_or_default();
+                assert!(
+                    first.starts_with("//! Exercise ")
+                        && first.contains(&format!(" ({stars}): ")),
+                    "{}: {first}",
+                    stub.display()
+                );
             }
         }
     }
