@@ -401,10 +401,12 @@ mod reflectance {
     use ch06::{CAMERA_MEDIUM, critical_angle, fresnel, schlick};
 
     /// The materials drawn, their colours (Okabe–Ito) and how the legend
-    /// names them; air is left out, its curves lie on vacuum's.
+    /// names them; air is left out, its curves lie on vacuum's. Ice and
+    /// water lie close together, so they get colours far apart: reddish
+    /// purple and blue, not two blues.
     const CURVES: [(&str, RGBColor); 6] = [
         ("vacuum", RGBColor(136, 136, 136)),
-        ("ice", RGBColor(86, 180, 233)),
+        ("ice", RGBColor(204, 121, 167)),
         ("water", RGBColor(0, 114, 178)),
         ("glass", RGBColor(0, 158, 115)),
         ("quartz", RGBColor(230, 159, 0)),

@@ -454,9 +454,13 @@ fn stadium_heat() -> Figure {
         .max()
         .unwrap_or(1)
         .max(2);
-    // cells that list spheres of the teapot (objects 5 … 1004)
-    let teapot_cells = (0..lattice.count())
-        .filter(|&c| grid.cell_objects(c).iter().any(|&k| k >= 5))
+    // cells that list spheres of the teapot (objects 5 … 1004): in the
+    // whole grid, and in the slice drawn
+    let teapot = |c: usize| grid.cell_objects(c).iter().any(|&k| k >= 5);
+    let teapot_cells = (0..lattice.count()).filter(|&c| teapot(c)).count();
+    let slice_cells = (0..nx)
+        .flat_map(|x| (0..ny).map(move |y| (x, y)))
+        .filter(|&(x, y)| teapot(lattice.index([x, y, z])))
         .count();
     let (iw, ih) = (f64::from(image.width()), f64::from(image.height()));
     let mut page = Page::new(900.0, ih + 60.0);
@@ -535,7 +539,7 @@ fn stadium_heat() -> Figure {
     Figure::new(
         "stadium-heat",
         &format!(
-            "The teapot in a stadium (scenes/stadium.toml): 1 000 tiny spheres in a cube 0.6 wide, inside a box 200 wide with walls 50 high. The rule gives {nx} × {ny} × {nz} cells of {:.1} units for its 1 005 objects, so the 1 000 spheres crowd into {teapot_cells} cells (up to {max} objects each; colours on a log scale) while nearly every other cell is empty: a ray through the teapot tests hundreds of spheres, and a ray that misses it walks dozens of empty cells.",
+            "The teapot in a stadium (scenes/stadium.toml): 1 000 tiny spheres in a cube 0.6 wide, inside a box 200 wide with walls 50 high. The rule gives {nx} × {ny} × {nz} cells of {:.1} units for its 1 005 objects, so the 1 000 spheres crowd into {teapot_cells} cells, {slice_cells} of them in the slice drawn (up to {max} objects each there; colours on a log scale), while nearly every other cell is empty: a ray through the teapot tests hundreds of spheres, and a ray that misses it walks dozens of empty cells.",
             lattice.size.x
         ),
         page,
