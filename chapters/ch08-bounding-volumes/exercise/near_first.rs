@@ -1,4 +1,4 @@
-//! Exercise 6: the near-first walk of a [`Bvh`] for the closest hit.
+//! Exercise 6 (★★★): the near-first walk of a [`Bvh`] for the closest hit.
 //!
 //! Fill in `near_first_closest_hit`; `cargo run --release -- check ch08`
 //! judges it.

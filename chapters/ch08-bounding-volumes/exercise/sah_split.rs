@@ -1,4 +1,4 @@
-//! Exercise 5: the SAH cost of one split.
+//! Exercise 5 (★★): the SAH cost of one split.
 use raystep_core::Aabb;
 
 use crate::SahCosts;

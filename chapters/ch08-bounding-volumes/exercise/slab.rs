@@ -1,4 +1,4 @@
-//! Exercise 1: the robust slab test.
+//! Exercise 1 (★★): the robust slab test.
 use raystep_core::{Aabb, Interval, Ray};
 
 /// γ₃ = 3u / (1 − 3u), u = 2⁻⁵³: the largest relative rounding error of a

@@ -1,4 +1,4 @@
-//! Exercise 4: a tight bounding sphere of a point set (Ritter, 1990).
+//! Exercise 4 (★★): a tight bounding sphere of a point set (Ritter, 1990).
 //!
 //! Fill in `sphere_of_points`; `cargo run --release -- check ch08` judges
 //! it.

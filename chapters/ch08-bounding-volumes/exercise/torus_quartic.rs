@@ -1,4 +1,4 @@
-//! Exercise 3: the torus's quartic in t.
+//! Exercise 3 (★★★): the torus's quartic in t.
 use raystep_core::Ray;
 
 // ANCHOR: torus_quartic
