@@ -340,16 +340,22 @@ impl Question {
             Some(toml::Value::String(answer)) => normal(answer) == chosen,
             _ => self.digests.contains(&digest(chapter, &self.id, &chosen)),
         };
+        // The option as the question spells it.
+        let option = self
+            .options
+            .iter()
+            .find(|o| normal(o) == chosen)
+            .map_or(chosen.as_str(), String::as_str);
         match (&self.answer, right) {
             (_, true) => Verdict::Passed,
             (Some(toml::Value::String(answer)), false) => {
                 Verdict::Failed(format!(
                     "question {n}, expected \"{answer}\" (your answer \
-                     \"{chosen}\")"
+                     \"{option}\")"
                 ))
             }
             _ => Verdict::Failed(format!(
-                "question {n}: \"{chosen}\" is not the answer"
+                "question {n}: \"{option}\" is not the answer"
             )),
         }
     }
@@ -617,6 +623,14 @@ mod tests {
     fn a_choice_is_compared_in_any_case_and_a_wrong_one_named() {
         let q = side_question();
         assert_eq!(judged(&q, "q3 = \" Left\""), Verdict::Passed);
+        let on = judged(&q, "q3 = \"ON THE LINE\"");
+        assert_eq!(
+            on,
+            Verdict::Failed(
+                "question 3, expected \"left\" (your answer \"on the line\")"
+                    .into()
+            )
+        );
         assert_eq!(
             judged(&q, "q3 = \"right\""),
             Verdict::Failed(

@@ -2,6 +2,7 @@
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
 mod diagrams;
+mod questions;
 
 use raystep_figure::Chapter;
 
@@ -12,4 +13,5 @@ pub const CHAPTER: Chapter = Chapter::new(
     &["ray_plane", "inside_polygon"],
 )
 .stars(&[1, 2])
+.questions(questions::all)
 .figures(diagrams::all);

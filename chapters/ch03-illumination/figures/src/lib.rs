@@ -2,6 +2,7 @@
 //! from the chapter's public API, and the chapter's entry in the command
 //! line ([`CHAPTER`]).
 mod diagrams;
+mod questions;
 
 use raystep_figure::{Chapter, render_world};
 
@@ -12,6 +13,7 @@ pub const CHAPTER: Chapter = Chapter::new(
     &["sphere_hit", "reflect", "local_shading"],
 )
 .stars(&[2, 1, 2])
+.questions(questions::all)
 .figures(diagrams::all)
 // `raystep render` with chapter 3's tracer: the local model, every light
 // visible

@@ -4,6 +4,7 @@
 mod charts;
 mod diagrams;
 pub mod measurements;
+mod questions;
 
 use raystep_figure::{Chapter, measurement, render_world};
 
@@ -11,6 +12,7 @@ use raystep_figure::{Chapter, measurement, render_world};
 pub const CHAPTER: Chapter =
     Chapter::new("ch04-shadows", "Shadows", &["shadow", "normal_offset"])
         .stars(&[2, 2])
+        .questions(questions::all)
         .figures(diagrams::all)
         .charts(&[charts::acne_chart])
         .measurements(&[measurement!(

@@ -4,6 +4,7 @@
 mod charts;
 mod diagrams;
 pub mod measurements;
+mod questions;
 
 use raystep_figure::{Chapter, measurement, render_world};
 
@@ -14,6 +15,7 @@ pub const CHAPTER: Chapter = Chapter::new(
     &["reflection", "recursion"],
 )
 .stars(&[1, 2])
+.questions(questions::all)
 .figures(diagrams::all)
 .charts(&[charts::stopping_chart])
 .measurements(&[measurement!(

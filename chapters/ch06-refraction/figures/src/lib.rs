@@ -4,6 +4,7 @@
 mod charts;
 mod diagrams;
 pub mod measurements;
+mod questions;
 
 use raystep_figure::{Chapter, measurement, render_world};
 use raystep_render::{Image, RenderError, RenderOptions};
@@ -13,6 +14,7 @@ use raystep_world::World;
 pub const CHAPTER: Chapter =
     Chapter::new("ch06-refraction", "Refraction", &["refraction", "schlick"])
         .stars(&[2, 1])
+        .questions(questions::all)
         .figures(diagrams::all)
         .charts(&[diagrams::reflectance_chart, charts::fresnel_chart])
         .measurements(&[measurement!(

@@ -4,6 +4,7 @@
 mod charts;
 mod diagrams;
 pub mod measurements;
+mod questions;
 
 use raystep_figure::{Chapter, measurement};
 
@@ -14,6 +15,7 @@ pub const CHAPTER: Chapter = Chapter::new(
     &["coverage", "depth_test"],
 )
 .stars(&[2, 1])
+.questions(questions::all)
 .figures(diagrams::all)
 .charts(&[charts::scaling_chart])
 .measurements(&[measurement!(
