@@ -7,6 +7,7 @@ mod bvh_rows;
 mod charts;
 mod diagrams;
 pub mod measurements;
+mod questions;
 mod rows;
 mod sketch;
 mod tightness_measure;
@@ -33,6 +34,7 @@ pub const CHAPTER: Chapter = Chapter::new(
     ],
 )
 .stars(&[2, 3, 3, 2, 2, 3])
+.questions(questions::all)
 .figures(diagrams::all)
 .charts(&[
     charts::costs_chart,

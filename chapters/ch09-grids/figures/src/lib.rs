@@ -4,6 +4,7 @@
 mod charts;
 mod diagrams;
 pub mod measurements;
+mod questions;
 pub mod rows;
 mod scene_files;
 
@@ -17,6 +18,7 @@ pub use scene_files::{
 pub const CHAPTER: Chapter =
     Chapter::new("ch09-grids", "Grids", &["dda_setup", "walk"])
         .stars(&[2, 3])
+        .questions(questions::all)
         .figures(diagrams::all)
         .charts(&[
             charts::resolution_chart,

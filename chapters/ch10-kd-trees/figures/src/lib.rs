@@ -4,6 +4,7 @@
 mod charts;
 mod diagrams;
 pub mod measurements;
+mod questions;
 pub mod rows;
 
 use raystep_figure::{Chapter, measurement};
@@ -15,6 +16,7 @@ pub const CHAPTER: Chapter = Chapter::new(
     &["split_cost", "traversal_step"],
 )
 .stars(&[2, 3])
+.questions(questions::all)
 .figures(diagrams::all)
 .charts(&[
     charts::build_chart,
