@@ -240,4 +240,46 @@ mod tests {
             }
         }
     }
+
+    /// The introduction's course map names every exercise and paper
+    /// question with the difficulty the chapter gives it.
+    #[test]
+    fn the_course_map_agrees_with_the_chapters() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let intro =
+            std::fs::read_to_string(root.join("book/src/introduction.md"))
+                .unwrap();
+        for chapter in CHAPTERS.iter().filter(|c| !c.exercises.is_empty()) {
+            // The map's rows of this chapter (chapter 8 has two).
+            let rows: Vec<&str> = intro
+                .lines()
+                .filter(|l| {
+                    l.starts_with("| [")
+                        && l.contains(&format!("]({}", chapter.id))
+                        && l.contains('★')
+                })
+                .collect();
+            let rows = rows.join("\n");
+            assert!(!rows.is_empty(), "no map row for {}", chapter.id);
+            for exercise in chapter.exercises {
+                let stars = chapter.difficulty(exercise).unwrap();
+                let named = format!("`{exercise}` {stars}");
+                assert!(
+                    rows.contains(&format!("{named},"))
+                        || rows.contains(&format!("{named} |")),
+                    "{}: {named}",
+                    chapter.id
+                );
+            }
+            for q in from_code(chapter).unwrap().questions {
+                let named = format!(
+                    "q{} {} {}",
+                    q.id.trim_start_matches('q'),
+                    q.difficulty(),
+                    q.title
+                );
+                assert!(rows.contains(&named), "{}: {named}", chapter.id);
+            }
+        }
+    }
 }
