@@ -13,9 +13,10 @@ pub fn all() -> Vec<Question> {
 /// Question 1: the side of the figure's line a point is on.
 fn side_of_the_line() -> Question {
     let (p0, p1) = (DVec2::new(1.0, 1.0), DVec2::new(3.0, 2.5));
-    let r = DVec2::new(4.0, 1.0);
+    // Off the figure (which would show the side), close to the line.
+    let s = DVec2::new(9.0, 6.9);
     let line = Line2::through(p0, p1).expect("two distinct points");
-    let f = line.eval(r);
+    let f = line.eval(s);
     let answer = if f > 0.0 {
         "positive"
     } else if f < 0.0 {
@@ -29,21 +30,22 @@ fn side_of_the_line() -> Question {
         title: "the side of a line a point is on",
         prompt: format!(
             "Take the figure's line through $P_0 = ({}, {})$ and \
-             $P_1 = ({}, {})$. Without drawing, is $f(R)$ for \
-             $R = ({}, {})$ positive (the side $N$ points to), negative, \
+             $P_1 = ({}, {})$. Without drawing, is $f(S)$ for \
+             $S = ({}, {})$ positive (the side $N$ points to), negative, \
              or zero (on the line)?",
-            p0.x, p0.y, p1.x, p1.y, r.x, r.y
+            p0.x, p0.y, p1.x, p1.y, s.x, s.y
         ),
         figure: Some("line-sign.svg"),
         options: &["positive", "negative", "zero"],
         answer,
         worked: format!(
             "$f(x, y) = -0.6 x + 0.8 y - 0.2$ (worked above), so \
-             $f(R) = -0.6 \\cdot {} + 0.8 \\cdot {} - 0.2 = {:.1}$: \
-             **{answer}**. $R$ is {:.1} units from the line, on the side \
-             $N$ points away from (right of $V$).",
-            r.x,
-            r.y,
+             $f(S) = -0.6 \\cdot {} + 0.8 \\cdot {} - 0.2 = {:.2}$: \
+             **{answer}**. $S$ is {:.2} units from the line, on the side \
+             $N$ points away from (right of $V$); the point $(9, 7)$ is on \
+             the line.",
+            s.x,
+            s.y,
             f,
             f.abs()
         ),

@@ -241,7 +241,7 @@ fn ulps_along_the_normal() -> Question {
         figure: Some("offsets.svg"),
         quantity: "Δy in units of 10⁻¹⁴",
         value: dy / unit,
-        step: 0.05,
+        step: 0.01,
         worked: format!(
             "$\\lvert y \\rvert = {}$ is not below $1/32$, so $y$ moves by \
              whole ulps of itself. It lies in $[2^{{{exponent}}}, \

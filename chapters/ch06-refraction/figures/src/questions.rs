@@ -153,7 +153,7 @@ fn schlick_leaving_glass() -> Question {
             "A ray inside {from} ($n_\\theta = {n_theta}$) meets the surface \
              to {into} ($n_\\varphi = {n_phi}$) at $\\theta = {degrees}°$. \
              What fraction $R$ of its light does Schlick's approximation \
-             reflect? Take the angle on the right side."
+             reflect? Mind which angle goes into Schlick's curve."
         ),
         figure: Some("reflectance.svg"),
         quantity: "R",

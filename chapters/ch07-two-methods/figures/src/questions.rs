@@ -180,34 +180,32 @@ fn what_grows() -> Question {
         growth(ray_small, ray_large),
         growth(raster_small, raster_large),
     );
-    let grows = |g: f64| g > 2.0;
-    let answer = match (grows(ray_growth), grows(raster_growth)) {
-        (true, false) => "ray casting",
-        (false, true) => "rasterization",
-        (true, true) => "both",
-        (false, false) => "neither",
-    };
-    ChoiceQuestion {
+    assert!(
+        ray_growth > 2.0 && raster_growth < 1.5,
+        "the ray caster's work grows, the rasterizer's hardly"
+    );
+    NumberQuestion {
         id: "q3",
         stars: 1,
-        title: "whose work grows with the triangles",
+        title: "how the ray caster's work grows with the triangles",
         prompt: format!(
             "The shapes scene at {width} × {height}: its ball goes from \
              {ball_small} triangles to {ball_large}, covering about the same \
-             pixels as before, beside the scene's other {alone} polygons. Which method's count of tests grows \
-             about fourfold with it: the ray caster's ray–polygon tests, the \
-             rasterizer's pixel tests, both, or neither?"
+             pixels as before, beside the scene's other {alone} polygons. By \
+             what factor does the ray caster's count of ray–polygon tests \
+             grow? (Then think about the rasterizer's pixel tests.)"
         ),
         figure: None,
-        options: &["ray casting", "rasterization", "both", "neither"],
-        answer,
+        quantity: "the factor",
+        value: ray_growth,
+        step: 0.02,
         worked: format!(
             "The ray caster tests every polygon with each of its {} rays: \
-             {} × {} = {} tests before, {} × {} = {} after, {ray_growth:.2} \
-             times as many. The rasterizer tests the pixel centres in each \
-             triangle's box, and the smaller triangles have smaller boxes \
-             that cover the same pixels between them: {} tests before, {} \
-             after, {raster_growth:.2} times as many. So **{answer}**.",
+             {} × {} = {} tests before, {} × {} = {} after, \
+             **{ray_growth:.2}** times as many. The rasterizer tests the \
+             pixel centres in each triangle's box, and the smaller triangles \
+             have smaller boxes that cover the same pixels between them: {} \
+             tests before, {} after, {raster_growth:.2} times as many.",
             grouped(pixels),
             grouped(pixels),
             small.world.objects.len(),

@@ -144,7 +144,7 @@ fn bound_speed_up() -> Question {
              hit the object play no part). $C_{{\\text{{bounded}}}} = {} + {} \\cdot \
              {} = {}$ ns against $C_{{\\text{{object}}}} = {}$ ns, so the \
              box makes a ray **{:.2}** times faster. It {}, as \
-             $P(\\text{{bound hit}}) = {}$ is {} $1 - {} / {} = {:.3}$.",
+             $P(\\text{{bound hit}}) = {}$ is {} $1 - {} / {} = {:.4}$.",
             counts.bound_hits,
             counts.rays,
             num(counts.p_bound()),

@@ -157,7 +157,7 @@ fn empty_bonus() -> Question {
             "A node's box runs from ${}$ to ${}$ and holds {objects} \
              objects; the constants are the chapter's ({}). The plane \
              $x = {}$ leaves {n_below} objects below it and {} above; the \
-             plane $x = {}$ leaves all {objects} below and none above. Which does the builder choose: the plane $x = {}$, the plane \
+             plane $x = {}$ leaves all {objects} below and none above. If these are its only candidate planes, which does the builder choose: the plane $x = {}$, the plane \
              $x = {}$, or no plane (the leaf)?",
             vector(node.min),
             vector(node.max),
