@@ -14,14 +14,22 @@ use crate::schlick;
 /// rₚ = (n_φ cos θ − n_θ cos φ) / (n_φ cos θ + n_θ cos φ)
 /// R = (rₛ² + rₚ²) / 2
 ///
-/// Past the critical angle R = 1: total internal reflection.
+/// Past the critical angle R = 1: total internal reflection. With the
+/// same index on both sides there is no surface: R = 0 (below 90°).
 pub fn fresnel(cos_theta: f64, n_theta: f64, n_phi: f64) -> f64 {
+    // Step 1: cos²φ = 1 − sin²φ = 1 − η²(1 − cos²θ) by Snell's law
+    // (η = n_θ/n_φ), summed as (1 − η²) + η²cos²θ: near 90°, 1 − cos²θ
+    // rounds to 1 and cos φ would come out 0; this way cos²φ is cos²θ
+    // itself when η = 1.
     let cos_theta = cos_theta.clamp(0.0, 1.0);
-    let sin2_phi = (n_theta / n_phi).powi(2) * (1.0 - cos_theta * cos_theta);
-    if sin2_phi >= 1.0 {
+    let eta2 = (n_theta / n_phi).powi(2);
+    let cos2_phi = (1.0 - eta2) + eta2 * cos_theta * cos_theta;
+    // Step 2: no φ past the critical angle: total internal reflection.
+    if cos2_phi <= 0.0 {
         return 1.0;
     }
-    let cos_phi = (1.0 - sin2_phi).sqrt();
+    // Step 3: the two polarisations' amplitudes, and their mean power.
+    let cos_phi = cos2_phi.sqrt();
     let rs = (n_theta * cos_theta - n_phi * cos_phi)
         / (n_theta * cos_theta + n_phi * cos_phi);
     let rp = (n_phi * cos_theta - n_theta * cos_phi)

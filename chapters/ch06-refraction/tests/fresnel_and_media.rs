@@ -93,9 +93,32 @@ fn normal_incidence() {
         assert!((fresnel(1.0, 1.0, n) - r).abs() < 1e-5, "{n}");
         assert!((fresnel(1.0, n, 1.0) - r).abs() < 1e-5, "{n}");
     }
-    // no step in index, no reflection (up to rounding: cos φ is cos θ
-    // recomputed through sin²φ)
-    assert!(fresnel(0.3, 1.33, 1.33) < 1e-30);
+    // no step in index, no reflection
+    assert_eq!(fresnel(0.3, 1.33, 1.33), 0.0);
+}
+
+/// With the same index on both sides there is no surface: R = 0 at every
+/// angle, grazing ones too. Computed as 1 − η²(1 − cos²θ), cos²φ would
+/// lose cos²θ to rounding below cos θ ≈ 1e-8 (1 − cos²θ rounds to 1) and
+/// report total reflection, R = 1; summed as (1 − η²) + η²cos²θ it is
+/// cos²θ itself.
+#[test]
+fn index_matched_reflects_nothing_even_grazing() {
+    for n in [1.0, 1.0003, 1.33, 1.5, 2.417] {
+        for cos_theta in [1.0, 0.5, 0.1, 1e-4, 1e-8, 1e-9, 1e-12, 1e-15] {
+            let r = fresnel(cos_theta, n, n);
+            assert!(
+                r <= 1e-30,
+                "n = {n} on both sides, cos θ = {cos_theta:e}: expected \
+                 R = 0 (no surface), got {r}"
+            );
+        }
+    }
+    // and beside it, a step in index still reflects: everything at 90°,
+    // a little less just before
+    assert_eq!(fresnel(0.0, 1.0, 1.5), 1.0);
+    let r = fresnel(1e-9, 1.0, 1.5);
+    assert!(r < 1.0 && r > 0.999_999, "{r}");
 }
 
 const WATER: f64 = 1.33;

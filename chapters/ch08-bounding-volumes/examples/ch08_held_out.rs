@@ -474,7 +474,7 @@ fn show_triangle(tri: &[DVec3; 3]) -> String {
 /// clearly inside it or clearly outside it (by 1e-3 of its size in
 /// barycentrics), not grazing its plane; the interval all of t ≥ 0, or
 /// ending before the hit, or starting after it; now and then pointing
-/// away, parallel, or with NaN in it.
+/// away, parallel, or with NaN or ∞ in it.
 fn random_triangle(rng: &mut Rng, case: &mut Case) {
     let s = 10f64.powf(rng.uniform(-4.0, 5.0));
     let reach = s * 10f64.powf(rng.uniform(0.0, 3.0));
@@ -542,6 +542,15 @@ fn random_triangle(rng: &mut Rng, case: &mut Case) {
                 let mut o = from;
                 o[rng.below(3)] = f64::NAN;
                 ("a NaN origin", Ray::new(o, direction), Interval::FORWARD)
+            }
+            4 if rng.chance(0.4) => {
+                let mut d = direction;
+                d[rng.below(3)] = f64::INFINITY * sign(rng);
+                (
+                    "an infinite direction",
+                    Ray::new(from, d),
+                    Interval::FORWARD,
+                )
             }
             _ if inside => {
                 ("aimed inside", Ray::new(from, direction), Interval::FORWARD)

@@ -1,4 +1,4 @@
-//! Exercise 2: the watertight ray–triangle test.
+//! Exercise 2 (★★★): the watertight ray–triangle test.
 #[allow(unused_imports)]
 use ch02::owns_boundary;
 use raystep_core::{DVec2, DVec3, Interval, Ray};

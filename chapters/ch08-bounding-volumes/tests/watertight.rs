@@ -169,6 +169,143 @@ fn misses_and_the_interval() {
     );
 }
 
+/// A ray with a NaN or an infinity in any of its six numbers hits
+/// nothing. An infinite direction is the one the other steps do not
+/// catch: the shear turns it into 0s, every corner lands at z = 0 and the
+/// ray would be reported hitting at t = 0; so each ray here starts on
+/// the line through the triangle's centroid along the axis that goes
+/// infinite.
+#[test]
+fn a_ray_with_an_infinity_or_a_nan_hits_nothing() {
+    let centroid = at(&TRIANGLE, 1.0 / 3.0, 1.0 / 3.0);
+    for bad in [f64::INFINITY, f64::NEG_INFINITY, f64::NAN] {
+        for axis in 0..3 {
+            for in_origin in [false, true] {
+                let (mut o, mut d) = (centroid, v(0.125, -0.25, 0.5));
+                o[axis] -= 3.0;
+                if in_origin {
+                    o[axis] = bad;
+                } else {
+                    d[axis] = bad;
+                }
+                let ray = Ray::new(o, d);
+                for interval in [Interval::FORWARD, Interval::UNIVERSE] {
+                    let t = watertight(&TRIANGLE, &ray, interval);
+                    assert_eq!(
+                        t, None,
+                        "a ray from {o} along {d}, t in [{}, {}]: expected \
+                         None (a NaN or an infinity in the ray hits \
+                         nothing), got {t:?}",
+                        interval.min, interval.max
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// A ray lying in the triangle's plane is seen edge-on: det = 0, a miss
+/// (in a closed mesh the neighbouring triangles' edges meet it). Every
+/// number here is a small integer, so each ray lies in its triangle's
+/// plane exactly and crosses the triangle's inside; but the shear's
+/// D[kx]/D[kz] and D[ky]/D[kz] round, the sheared corners are then not
+/// exactly on one line, and det is not exactly 0.
+#[test]
+fn a_ray_in_the_triangles_plane_hits_nothing() {
+    let planes = [
+        // a triangle's corner and two edges, tilted away from every axis
+        (v(1.0, -2.0, 3.0), v(3.0, 1.0, -2.0), v(-1.0, 2.0, 1.0)),
+        (v(-5.0, 4.0, 7.0), v(7.0, 3.0, 5.0), v(2.0, -6.0, 3.0)),
+        (v(0.0, 0.0, 0.0), v(6.0, 0.0, 1.0), v(0.0, 6.0, 5.0)),
+        // and one in the plane z = 2, where the shear is exact
+        (v(0.0, 0.0, 2.0), v(5.0, 1.0, 0.0), v(-1.0, 4.0, 0.0)),
+    ];
+    let mut rays = 0;
+    for (corner, e1, e2) in planes {
+        let tri = [corner, corner + e1, corner + e2];
+        // the ray from (a, b) to the inside point (1/4, 1/4) (in units of
+        // the edges), with a and b from −3 to 3, and along that line from
+        // inside the triangle too
+        for (a, b) in (-3..=3).flat_map(|a| (-3..=3).map(move |b| (a, b))) {
+            let (a, b) = (f64::from(a), f64::from(b));
+            let (du, dw) = (1.0 - 4.0 * a, 1.0 - 4.0 * b);
+            if (du, dw) == (0.0, 0.0) {
+                continue;
+            }
+            let d = du * e1 + dw * e2;
+            for from in [corner + a * e1 + b * e2, corner] {
+                for tri in [tri, reversed(&tri)] {
+                    let ray = Ray::new(from, d);
+                    let t = watertight(&tri, &ray, Interval::UNIVERSE);
+                    assert_eq!(
+                        t,
+                        None,
+                        "{}: a ray from {from} along {d}, lying in the \
+                         triangle's plane: expected None (seen edge-on, \
+                         det = 0 but for the shear's rounding), got {t:?}",
+                        corners(&tri)
+                    );
+                    rays += 1;
+                }
+            }
+        }
+    }
+    assert!(rays > 300, "{rays} rays");
+}
+
+/// Rays in the plane of a random triangle to within rounding (their
+/// origin and direction computed from the corners), through its inside: a
+/// miss, or a hit where the ray's line crosses the triangle (its t within
+/// 1e-9 of that stretch). A hit anywhere else is the noise of a det that
+/// should count as 0.
+#[test]
+fn a_ray_almost_in_the_plane_misses_or_hits_where_it_crosses() {
+    let mut rng = Rng::new(0x0008_1A4E);
+    for _ in 0..20_000 {
+        let tri = loop {
+            let tri = [rng.vec3(1.0), rng.vec3(1.0), rng.vec3(1.0)];
+            let (e1, e2) = (tri[1] - tri[0], tri[2] - tri[0]);
+            if e1.cross(e2).length() > 0.2 * e1.length() * e2.length() {
+                break tri;
+            }
+        };
+        let (e1, e2) = (tri[1] - tri[0], tri[2] - tri[0]);
+        // (u, w) of the origin and (du, dw) of the direction: the origin
+        // outside, the line through the inside
+        let inside = (rng.uniform(0.1, 0.45), rng.uniform(0.1, 0.45));
+        let angle = rng.uniform(0.0, std::f64::consts::TAU);
+        let step = (angle.cos(), angle.sin());
+        let start = (inside.0 - 3.0 * step.0, inside.1 - 3.0 * step.1);
+        let ray = Ray::new(
+            tri[0] + start.0 * e1 + start.1 * e2,
+            step.0 * e1 + step.1 * e2,
+        );
+        // the stretch of t where u ≥ 0, w ≥ 0 and u + w ≤ 1
+        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+        for (s, ds) in [
+            (start.0, step.0),
+            (start.1, step.1),
+            (1.0 - start.0 - start.1, -step.0 - step.1),
+        ] {
+            if ds > 0.0 {
+                lo = lo.max(-s / ds);
+            } else if ds < 0.0 {
+                hi = hi.min(-s / ds);
+            }
+        }
+        let t = watertight(&tri, &ray, Interval::UNIVERSE);
+        assert!(
+            t.is_none_or(|t| (lo - 1e-9..=hi + 1e-9).contains(&t)),
+            "{}: a ray from {} along {}, in the triangle's plane to within \
+             rounding, crossing it for t in [{lo}, {hi}]: expected None or \
+             a hit in that stretch, got {t:?}",
+            corners(&tri),
+            ray.origin,
+            ray.direction
+        );
+    }
+}
+
 /// A flat mesh for exact ties: its triangles and the points on its shared
 /// edges and vertices that the tests aim at, every coordinate a short
 /// binary fraction.

@@ -182,9 +182,11 @@ pub fn watertight(
         return PreparedRay::new(&ray.ray).triangle(v, interval);
     }
     // Step 5: all three sure and of one sign (none is 0): t, as chapter
-    // 8 computes it.
-    let det = e0 + e1 + e2;
-    if det == 0.0 || !det.is_finite() {
+    // 8 computes it, and no hit where det is within rounding of 0 (a ray
+    // in the triangle's plane).
+    let sheared = [(a, za), (b, zb), (c, zc)];
+    let (det, noise) = (e0 + e1 + e2, shear.det_rounding(&sheared));
+    if !det.is_finite() || det.abs() <= noise {
         return None;
     }
     let t = (e0 * za + e1 * zb + e2 * zc) / det;

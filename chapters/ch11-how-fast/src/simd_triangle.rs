@@ -13,8 +13,8 @@
 #![cfg(target_arch = "x86_64")]
 use std::arch::x86_64::*;
 
-use ch08::PreparedRay;
-use raystep_core::{DVec3, Interval};
+use ch08::{PreparedRay, Shear};
+use raystep_core::{DVec2, DVec3, Interval};
 
 use crate::ray::FastRay;
 
@@ -124,12 +124,14 @@ unsafe fn watertight4(
             return PreparedRay::new(&ray.ray)
                 .triangle(&triangle.corners(), interval);
         }
-        // Step 5: t, as chapter 8 computes it, in its order of sums.
+        // Step 5: t, as chapter 8 computes it, in its order of sums; no
+        // hit where det is within rounding of 0 (a ray in the triangle's
+        // plane), that rounding from the same corners as chapter 8's.
         let (mut e, mut ez) = ([0.0; 4], [0.0; 4]);
         _mm256_storeu_pd(e.as_mut_ptr(), fast);
         _mm256_storeu_pd(ez.as_mut_ptr(), _mm256_mul_pd(fast, z));
         let det = e[0] + e[1] + e[2];
-        if det == 0.0 || !det.is_finite() {
+        if !det.is_finite() || det.abs() <= det_rounding(ray, x, y, z) {
             return None;
         }
         let t = (ez[0] + ez[1] + ez[2]) / det;
@@ -137,3 +139,28 @@ unsafe fn watertight4(
     }
 }
 // ANCHOR_END: watertight4
+
+/// Chapter 8's [`Shear::det_rounding`] of the corners sheared into the
+/// lanes `x`, `y`, `z`: the same numbers, so the same bound.
+///
+/// # Safety
+/// The CPU must have AVX (AVX2 implies it).
+#[inline(always)]
+unsafe fn det_rounding(
+    ray: &FastRay, x: __m256d, y: __m256d, z: __m256d,
+) -> f64 {
+    let (mut xs, mut ys, mut zs) = ([0.0; 4], [0.0; 4], [0.0; 4]);
+    // SAFETY: the caller has checked AVX; each store writes four f64s into
+    // a [f64; 4].
+    unsafe {
+        _mm256_storeu_pd(xs.as_mut_ptr(), x);
+        _mm256_storeu_pd(ys.as_mut_ptr(), y);
+        _mm256_storeu_pd(zs.as_mut_ptr(), z);
+    }
+    let sheared = [0, 1, 2].map(|i| (DVec2::new(xs[i], ys[i]), zs[i]));
+    let shear = Shear {
+        axes: ray.axes,
+        shear: ray.shear,
+    };
+    shear.det_rounding(&sheared)
+}

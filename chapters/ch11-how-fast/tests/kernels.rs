@@ -246,6 +246,43 @@ fn the_inlined_test_is_chapter_8s_bit_for_bit() {
     }
 }
 
+#[test]
+fn a_ray_in_the_triangles_plane_is_a_miss_in_every_kernel() {
+    // small integer corners and rays lying exactly in the triangle's plane,
+    // crossing its inside: the shear rounds, det comes out as noise, and
+    // chapter 8 calls it 0 (no hit); the inlined test and step 6's must
+    // do the same, from the same bound
+    let v3 = raystep_core::DVec3::new;
+    let planes = [
+        (v3(1.0, -2.0, 3.0), v3(3.0, 1.0, -2.0), v3(-1.0, 2.0, 1.0)),
+        (v3(-5.0, 4.0, 7.0), v3(7.0, 3.0, 5.0), v3(2.0, -6.0, 3.0)),
+        (v3(0.0, 0.0, 0.0), v3(6.0, 0.0, 1.0), v3(0.0, 6.0, 5.0)),
+    ];
+    let interval = raystep_core::Interval::UNIVERSE;
+    let mut cases = 0;
+    for (corner, e1, e2) in planes {
+        let v = [corner, corner + e1, corner + e2];
+        for (a, b) in (-3..=3).flat_map(|a| (-3..=3).map(move |b| (a, b))) {
+            let (a, b) = (f64::from(a), f64::from(b));
+            let d = (1.0 - 4.0 * a) * e1 + (1.0 - 4.0 * b) * e2;
+            let ray = Ray32 {
+                origin: (corner + a * e1 + b * e2).as_vec3(),
+                direction: d.as_vec3(),
+            };
+            let Some(fast) = FastRay::new(&ray, false) else {
+                continue;
+            };
+            let theirs = ch08::watertight(&v, &ray.to_ray(), interval);
+            assert_eq!(theirs, None, "{ray:?} lies in the plane of {v:?}");
+            let ours = ch11::leaf_triangles::watertight(&v, &fast, interval);
+            assert_eq!(ours, None, "{ray:?}, inlined");
+            three_edges_at_once(&v, &fast, theirs, cases);
+            cases += 1;
+        }
+    }
+    assert!(cases > 100, "{cases} cases");
+}
+
 /// Step 6's test of `v` gives chapter 8's answer `theirs` bit for bit
 /// (asserted); false where the CPU has no AVX2 (not compared).
 #[cfg(target_arch = "x86_64")]

@@ -71,8 +71,8 @@ pub fn cases() -> Vec<Case> {
         Case {
             group: GROUP,
             name: "grazing an index-matched surface",
-            what: "n = n, cos θ ≈ 1e-12: 1 − cos²θ rounds to 1; refract \
-                   survives, fresnel says R = 1, Schlick ≈ 1",
+            what: "n = n, cos θ ≈ 1e-12: 1 − cos²θ rounds to 1; refract and \
+                   fresnel (cos²φ as 1 − η² + η²cos²θ) survive, Schlick ≈ 1",
             run: index_matched,
         },
         Case {
@@ -291,10 +291,11 @@ fn index_matched(budget: &Budget) -> Vec<(Count, Expect)> {
             .map(|r| !(0.0..=UNIT).contains(&r));
         [!right, f, s]
     });
-    // chapter 6's `fresnel`: 1 − cos²θ rounds to 1, so sin²φ ≥ 1 and it
-    // reports total reflection (a finding of the catalogue, not fixed)
-    counts[1].1 = Expect::Shown;
-    counts[2].1 = Expect::Shown; // chapter 6: Schlick's curve ignores n
+    // chapter 6's `fresnel` sums cos²φ as (1 − η²) + η²cos²θ, which is
+    // cos²θ itself for η = 1 (1 − η²(1 − cos²θ) would round to 0 here and
+    // report total reflection): built to survive. Schlick's curve ignores
+    // n and rises to 1.
+    counts[2].1 = Expect::Shown;
     counts
 }
 

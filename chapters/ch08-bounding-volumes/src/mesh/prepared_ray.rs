@@ -58,7 +58,7 @@ impl PreparedRay {
     pub fn triangle(&self, v: &[DVec3; 3], interval: Interval) -> Option<f64> {
         // Step 3 (exercise 2), then steps 4–7.
         let sheared = v.map(|vertex| self.shear.vertex(self.origin, vertex));
-        sheared_hit(sheared, interval)
+        sheared_hit(sheared, &self.shear, interval)
     }
 
     /// Does the triangle `v` block the ray within `interval`? One

@@ -17,15 +17,24 @@ use crate::Shear;
 /// A ray exactly on an edge (an edge function exactly 0) counts for the
 /// one triangle that owns the edge (chapter 2's tie rule), and at a shared
 /// vertex for one triangle of its fan: no ray hits twice either.
+///
+/// A ray with a NaN or an infinity hits nothing, and neither does a ray
+/// lying in the triangle's plane (the paper's det = 0).
 pub fn watertight(
     v: &[DVec3; 3], ray: &Ray, interval: Interval,
 ) -> Option<f64> {
+    // Step 0: no hit for a NaN or an infinity in the ray. (The shear would
+    // turn an infinite direction into 0s: every corner at z = 0, and a
+    // hit at t = 0.)
+    if !(ray.origin.is_finite() && ray.direction.is_finite()) {
+        return None;
+    }
     // Steps 1 and 2: the ray's axes and shear.
     let shear = Shear::of(ray.direction);
     // Step 3: each vertex sheared.
     let sheared = v.map(|vertex| shear.vertex(ray.origin, vertex));
     // Steps 4–7.
-    sheared_hit(sheared, interval)
+    sheared_hit(sheared, &shear, interval)
 }
 // ANCHOR_END: watertight
 
@@ -64,15 +73,15 @@ impl Shear {
 
 // ANCHOR: sheared_hit
 /// Steps 4–7 of [`watertight`]: the hit `t`, if the origin of the xy plane
-/// lies inside the sheared triangle (each corner as its `(x, y)` across
-/// the ray and its `z` along it). Chapter 8's fast walk shears each ray's
-/// triangles itself (steps 1–3 once per ray) and then asks this.
-/// (Inlined: the appendix's walks call it through
+/// lies inside the triangle `sheared` by `shear` (each corner as its
+/// `(x, y)` across the ray and its `z` along it). Chapter 8's fast walk
+/// shears each ray's triangles itself (steps 1–3 once per ray) and then
+/// asks this. (Inlined: the appendix's walks call it through
 /// [`PreparedRay::triangle`](crate::PreparedRay::triangle) from another
 /// crate.)
 #[inline]
 pub(crate) fn sheared_hit(
-    sheared: [(DVec2, f64); 3], interval: Interval,
+    sheared: [(DVec2, f64); 3], shear: &Shear, interval: Interval,
 ) -> Option<f64> {
     let [(a, za), (b, zb), (c, zc)] = sheared;
     // Step 4: the edge functions at the origin, each with an exact sign:
@@ -82,11 +91,18 @@ pub(crate) fn sheared_hit(
         edge_function(c, a),
         edge_function(a, b),
     ];
-    // Step 5: outside if they disagree in sign, edge-on if all are 0.
+    // Step 5: outside if they disagree in sign. Edge-on if det is 0: the
+    // ray lies in the triangle's plane, and counts as a miss (as in the
+    // paper; in a closed mesh the neighbours' edges meet it). The shear
+    // rounds the corners, so such a ray's det is rounding noise, not 0:
+    // within `det_rounding` of 0 is 0.
     let some_positive = e.iter().any(|&e| e > 0.0);
     let some_negative = e.iter().any(|&e| e < 0.0);
+    if some_positive && some_negative {
+        return None;
+    }
     let det = e[0] + e[1] + e[2];
-    if (some_positive && some_negative) || det == 0.0 || !det.is_finite() {
+    if !det.is_finite() || det.abs() <= shear.det_rounding(&sheared) {
         return None;
     }
     // Step 6: an edge function of 0 puts the ray on that edge: it counts
