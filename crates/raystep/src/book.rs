@@ -63,7 +63,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
 
     // Step 1: the figures, drawn from the code.
     if options.figures {
-        draw_figures(&crate::figures::default_out(&root))?;
+        draw_figures(&crate::workspace::figures_dir(&root))?;
     }
 
     // Step 2: the pages, through mdBook with the book's preprocessing.

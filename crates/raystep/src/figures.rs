@@ -23,11 +23,6 @@ pub struct Options {
     pub check: bool,
 }
 
-/// The figure folder of the book: `<workspace>/book/src/figures`.
-pub fn default_out(root: &Path) -> PathBuf {
-    root.join("book").join("src").join("figures")
-}
-
 /// Runs `raystep figures`.
 pub fn run(options: &Options) -> Result<ExitCode, Error> {
     let chapters: Vec<&Chapter> = match &options.chapter {
@@ -36,7 +31,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     };
     let out = match &options.out {
         Some(out) => out.clone(),
-        None => relative(&default_out(&workspace::root())),
+        None => relative(&workspace::figures_dir(&workspace::root())),
     };
     if options.check {
         check(&chapters, &out, options.format)

@@ -36,7 +36,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     }
     let out = match &options.out {
         Some(out) => out.clone(),
-        None => crate::figures::default_out(&crate::workspace::root()),
+        None => crate::workspace::figures_dir(&crate::workspace::root()),
     };
     let measured: Vec<&Chapter> = CHAPTERS
         .iter()
@@ -112,7 +112,7 @@ mod tests {
     /// measurements write: none is stale, none is missing.
     #[test]
     fn every_committed_csv_has_its_measurement() {
-        let figures = crate::figures::default_out(&crate::workspace::root());
+        let figures = crate::workspace::figures_dir(&crate::workspace::root());
         let mut committed = Vec::new();
         for chapter in std::fs::read_dir(&figures).expect("book/src/figures") {
             let chapter = chapter.expect("a folder entry").path();

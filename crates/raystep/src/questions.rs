@@ -27,7 +27,7 @@ const ANSWERS_LIMIT: u64 = 64 * 1024;
 
 /// The questions file of `chapter` in the workspace at `root`.
 pub fn file(root: &Path, chapter: &Chapter) -> PathBuf {
-    crate::figures::default_out(root)
+    crate::workspace::figures_dir(root)
         .join(chapter.id)
         .join("questions.toml")
 }

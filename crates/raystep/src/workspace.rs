@@ -20,6 +20,11 @@ fn compiled_root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("..")
 }
 
+/// The figure folder of the book: `<workspace>/book/src/figures`.
+pub fn figures_dir(root: &Path) -> PathBuf {
+    root.join("book").join("src").join("figures")
+}
+
 /// Walks up from `start` to the first `Cargo.toml` that declares `[workspace]`.
 pub fn find_root(start: &Path) -> Option<PathBuf> {
     start.ancestors().find_map(|dir| {
