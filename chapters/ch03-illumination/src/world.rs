@@ -38,6 +38,18 @@ pub fn shape(spec: &ShapeSpec) -> Result<Arc<dyn Shape>, String> {
 /// The world of `scene`, with chapter 3's shapes and the lecture's
 /// brute-force loop. `file` names the scene in errors.
 pub fn world(scene: &Scene, file: &str) -> Result<World, WorldError> {
+    // Instances of a mesh are chapter 8's two-level hierarchy.
+    if let Some(instance) = scene.instances.first() {
+        return Err(WorldError::NotTaught {
+            file: file.to_string(),
+            line: instance.line,
+            field: "instances[0]".to_string(),
+            message: "instances of a mesh are chapter 8's, which chapters \
+                      3–7 do not know: render this scene with `--chapter \
+                      ch08`"
+                .to_string(),
+        });
+    }
     World::from_scene(scene, file, shape, Arc::new(BruteForce))
 }
 

@@ -218,6 +218,7 @@ fn zero_area_mesh_triangles_are_skipped() {
             DVec3::new(3.0, 0.5, -3.0),
         ],
         triangles: vec![[0, 1, 2], [0, 0, 2], [0, 1, 3], [2, 2, 2]],
+        normals: Vec::new(),
     };
     let mut stage = stage(&[(FLOOR, "floor")]);
     let skipped = stage.add_mesh(&mesh, 0);

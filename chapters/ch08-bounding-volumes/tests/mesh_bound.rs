@@ -37,6 +37,7 @@ fn every_bunny_triangle_is_a_triangle() {
     let flat = Mesh {
         vertices: vec![DVec3::ZERO, DVec3::X, 2.0 * DVec3::X, DVec3::Y],
         triangles: vec![[0, 1, 2], [0, 1, 3]],
+        normals: Vec::new(),
     };
     let flat = TriangleMesh::new(&flat);
     assert_eq!((flat.triangles().len(), flat.skipped()), (1, 1));

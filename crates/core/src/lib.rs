@@ -31,4 +31,4 @@ pub use shape::Shape;
 
 /// glam, re-exported so chapters use the same version of it.
 pub use glam;
-pub use glam::{DVec2, DVec3};
+pub use glam::{DAffine3, DVec2, DVec3};

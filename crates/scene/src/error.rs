@@ -192,13 +192,16 @@ impl<'a> Context<'a> {
 }
 
 /// The top-level keys of a scene file.
-const TOP_LEVEL: [&str; 6] = [
+const TOP_LEVEL: [&str; 9] = [
     "image",
     "camera",
     "ambient",
+    "background",
     "lights",
     "materials",
     "objects",
+    "meshes",
+    "instances",
 ];
 
 /// Serde's names for what it expected or found, in TOML's words.

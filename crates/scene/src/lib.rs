@@ -1,15 +1,18 @@
-//! Scene files for chapters 3–8 of the raystep lecture: read, checked, and
+//! Scene files for chapters 3–10 of the raystep lecture: read, checked, and
 //! handed over as plain data.
 //!
 //! A scene is a TOML file. [`load`] (or [`parse`], for a string) reads it
 //! into a [`Scene`]: image size, [`CameraSpec`], ambient light, point
 //! [`Light`]s, named [`Material`]s and [`Object`]s whose [`Shape`] is a
-//! sphere, a plane or a polygon, or one of chapter 8's primitives. This crate checks the data but knows no
-//! geometry: the chapters build their own spheres, planes and polygons from
-//! it.
+//! sphere, a plane or a polygon, one of chapter 8's primitives, or a
+//! triangle mesh placed once ([`Shape::Mesh`]); and named meshes
+//! ([`Scene::meshes`]) placed any number of times ([`Scene::instances`]).
+//! This crate checks the data but knows no geometry: the chapters build
+//! their own spheres, planes, polygons and triangles from it.
 //!
-//! Triangle meshes ([`Mesh`]) come from OBJ files ([`Mesh::load_obj`]) or
-//! are made in code ([`Mesh::icosphere`]).
+//! Triangle meshes ([`Mesh`]) come from OBJ files ([`Mesh::load_obj`], or
+//! a scene's `obj = "…"`) or are made in code ([`Mesh::icosphere`]). A
+//! [`Placement`] puts one in the world.
 //!
 //! # The format
 //!
@@ -34,6 +37,26 @@
 //!   fields reliably; optional keys can, and the "exactly one shape" rule
 //!   gets an error worded for it. A chapter that has not taught a shape
 //!   refuses it when it builds its world.
+//! * A triangle mesh is an object's `mesh = { obj = "PATH", … }`, placed
+//!   once, or a `[meshes.NAME]` table (`obj`, `smooth`) that
+//!   `[[instances]]` entries place by its name, each with its own
+//!   placement and `material`, sharing the mesh's triangles.
+//! * A placement is `scale` (one number or `[x, y, z]`, no component 0,
+//!   default 1), `rotate` (degrees about x, then y, then z, right-handed,
+//!   default 0) and `translate` (default 0), applied in that order:
+//!   [`Placement::to_world`] is T · Rz · Ry · Rx · S.
+//! * `smooth` (default `true`) shades a mesh by its OBJ's vertex normals
+//!   (`vn`) where it has them ([`Mesh::normals`]); `smooth = false`, and
+//!   an OBJ without `vn`, shade it flat, by each triangle's normal.
+//! * An `obj` path is found thus: an absolute path as it is; a relative
+//!   one in the scene file's folder, else in each folder above it in
+//!   turn, the first that has the file (for [`parse`], the folder of its
+//!   `file_name`). So `shared/meshes/bunny.obj` finds the project's
+//!   `../shared` from any scene in the workspace, with `shared/` beside
+//!   the clone. Each file is read once, however many objects, names and
+//!   instances use it ([`Scene::meshes`] and the objects share it through
+//!   an [`Arc`]). Every field of the scene is checked before any file is
+//!   read.
 //! * The materials list always starts with the one named `"default"` (0.7
 //!   grey, diffuse only, unless the file defines `[materials.default]`),
 //!   followed by the file's other materials in the order they appear.
@@ -53,6 +76,14 @@
 //! the line and column those of the value, or of its table if the value is
 //! missing. Nothing in this crate panics on any input.
 //!
+//! A fault in a mesh file is reported at its `obj` value, with the OBJ's
+//! own line where one is to blame:
+//!
+//! ```text
+//! scenes/bunny.toml:5:7: meshes.bunny.obj: meshes/bad.obj:12: vertex index 9 is not one of the 8 before it: f 1 2 9
+//! scenes/bunny.toml:9:16: objects[1].mesh.obj: cannot read meshes/x.obj (looked in /home/me/raystep/scenes and every folder above it): No such file or directory
+//! ```
+//!
 //! ```
 //! let error = raystep_scene::parse("[camera]\nlook_from = [0, 0, 5]\n", "a.toml").unwrap_err();
 //! assert_eq!(error.to_string(), "a.toml:1:1: camera.look_at: required, but missing");
@@ -64,10 +95,15 @@ mod format;
 mod indices;
 mod mesh;
 mod obj_check;
+mod placement;
 mod raw;
+mod scene_meshes;
 mod shapes;
 
+use std::collections::BTreeMap;
+use std::ops::Range;
 use std::path::Path;
+use std::sync::Arc;
 
 use raystep_core::{Camera, DVec3};
 use serde::Deserialize;
@@ -79,7 +115,9 @@ pub use error::SceneError;
 use format::{format_number, format_vec};
 pub use indices::{REFRACTIVE_INDICES, index_of_refraction};
 pub use mesh::{Mesh, MeshError};
-use raw::{RawMaterial, RawObject, RawScene, Table};
+pub use placement::Placement;
+use raw::{RawInstance, RawMaterial, RawObject, RawScene, Table};
+use scene_meshes::{MeshFiles, MeshRequest, check_placed};
 
 /// The largest image width or height a scene may ask for, in pixels.
 pub const MAX_SIZE: u32 = 4096;
@@ -115,6 +153,11 @@ pub struct Scene {
     pub materials: Vec<Material>,
     /// The objects, in file order.
     pub objects: Vec<Object>,
+    /// The meshes of `[meshes.NAME]`, by name, each read once and shared
+    /// by every instance that names it.
+    pub meshes: BTreeMap<String, Arc<Mesh>>,
+    /// The `[[instances]]` of those meshes, in file order.
+    pub instances: Vec<Instance>,
 }
 
 impl Scene {
@@ -260,6 +303,22 @@ pub struct Object {
     pub line: usize,
 }
 
+/// One `[[instances]]` entry: a mesh of [`Scene::meshes`] placed once
+/// more, its triangles shared with every other instance of it (a tracer
+/// takes each ray into the mesh's frame instead of copying the mesh).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Instance {
+    /// The name of its mesh, a key of [`Scene::meshes`].
+    pub mesh: String,
+    /// Where the mesh is put.
+    pub placement: Placement,
+    /// Index of its material in [`Scene::materials`].
+    pub material: usize,
+    /// The 1-based line of the entry (its `[[instances]]` header), for
+    /// errors found later.
+    pub line: usize,
+}
+
 /// An object's shape, its numbers checked (not its geometry).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
@@ -343,6 +402,16 @@ pub enum Shape {
         /// The iso-value, `0 < threshold < Σ strength`.
         threshold: f64,
     },
+    /// A triangle mesh from an OBJ file, placed once: a chapter flattens
+    /// it into its triangles in the world
+    /// (`placement.to_world()` applied to each vertex).
+    Mesh {
+        /// The mesh in its own frame, as the file holds it (shared with
+        /// every other object and instance that reads the same file).
+        mesh: Arc<Mesh>,
+        /// Where it is put.
+        placement: Placement,
+    },
 }
 
 /// One ball of a [`Shape::Blobby`]: a field `strength·f(r / radius)` that
@@ -391,6 +460,7 @@ impl Shape {
             Shape::Torus { .. } => "torus",
             Shape::Saddle { .. } => "saddle",
             Shape::Blobby { .. } => "blobby",
+            Shape::Mesh { .. } => "mesh",
         }
     }
 
@@ -442,6 +512,12 @@ impl Shape {
                     ball.radius *= s;
                 }
             }
+            // s·(T·R·S·v) = (s·T)·R·(s·S)·v: a uniform scale commutes
+            // with the rotation
+            Shape::Mesh { placement, .. } => {
+                placement.scale *= s;
+                placement.translate *= s;
+            }
         }
     }
 }
@@ -472,8 +548,9 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
     parse(&source, &file)
 }
 
-/// Reads and checks a scene from `source`; `file_name` is only used in
-/// error messages.
+/// Reads and checks a scene from `source`. `file_name` names it in error
+/// messages, and its folder is the scene's folder, where the search for
+/// its mesh files starts (a bare name: the current folder).
 pub fn parse(source: &str, file_name: &str) -> Result<Scene, SceneError> {
     let document = DeTable::parse(source).map_err(|e| {
         let span = e.span().unwrap_or(0..0);
@@ -494,11 +571,15 @@ pub fn parse(source: &str, file_name: &str) -> Result<Scene, SceneError> {
     let context = Context::new(source, file_name, &document);
     let raw = RawScene::deserialize(toml::Deserializer::from(document))
         .map_err(|e| context.serde_error(&e))?;
-    build(raw, &context)
+    let folder = Path::new(file_name).parent().unwrap_or(Path::new(""));
+    build(raw, &context, folder)
 }
 
-/// The checks that compare a field with a limit or with other fields.
-fn build(raw: RawScene, cx: &Context) -> Result<Scene, SceneError> {
+/// The checks that compare a field with a limit or with other fields,
+/// then the mesh files (found from `folder`) read.
+fn build(
+    raw: RawScene, cx: &Context, folder: &Path,
+) -> Result<Scene, SceneError> {
     let size = |value: Option<Spanned<i64>>, default: u32| match value {
         None => Ok(default),
         Some(v) => match u32::try_from(*v.get_ref()) {
@@ -550,11 +631,55 @@ fn build(raw: RawScene, cx: &Context) -> Result<Scene, SceneError> {
         }
     }
 
-    let objects = raw
+    // Every field first; then the mesh files, each read once.
+    let mut named = Vec::new();
+    for (name, m) in &raw.meshes {
+        let Table(m) = m.get_ref();
+        let request = MeshRequest::new(m.obj.clone(), m.smooth, cx)?;
+        named.push((m.obj.span().start, name.clone(), request));
+    }
+    named.sort_by_key(|(start, ..)| *start);
+    let pending: Vec<(shapes::ObjectShape, usize, usize)> = raw
         .objects
         .into_iter()
         .map(|o| object(o, &materials, cx))
         .collect::<Result<_, _>>()?;
+    let placed: Vec<(Instance, Range<usize>)> = raw
+        .instances
+        .into_iter()
+        .map(|i| instance(i, &raw.meshes, &materials, cx))
+        .collect::<Result<_, _>>()?;
+
+    let mut files = MeshFiles::new(folder);
+    let mut meshes = BTreeMap::new();
+    for (_, name, request) in named {
+        meshes.insert(name, files.load(&request, cx)?);
+    }
+    let mut objects = Vec::with_capacity(pending.len());
+    for (shape, material, line) in pending {
+        let shape = match shape {
+            shapes::ObjectShape::Ready(shape) => shape,
+            shapes::ObjectShape::Mesh {
+                request,
+                placement,
+                span,
+            } => {
+                let mesh = files.load(&request, cx)?;
+                check_placed(&mesh, &placement, span, cx)?;
+                Shape::Mesh { mesh, placement }
+            }
+        };
+        objects.push(Object {
+            shape,
+            material,
+            line,
+        });
+    }
+    let mut instances = Vec::with_capacity(placed.len());
+    for (instance, span) in placed {
+        check_placed(&meshes[&instance.mesh], &instance.placement, span, cx)?;
+        instances.push(instance);
+    }
 
     Ok(Scene {
         width,
@@ -565,6 +690,8 @@ fn build(raw: RawScene, cx: &Context) -> Result<Scene, SceneError> {
         lights,
         materials,
         objects,
+        meshes,
+        instances,
     })
 }
 
@@ -690,38 +817,73 @@ fn material(
     })
 }
 
+/// An object's shape (a mesh not yet read), material and line.
 fn object(
     raw: Spanned<Table<RawObject>>, materials: &[Material], cx: &Context,
-) -> Result<Object, SceneError> {
+) -> Result<(shapes::ObjectShape, usize, usize), SceneError> {
     let span = raw.span();
     let Table(mut o) = raw.into_inner();
     let line = cx.line_column(span.start).0;
 
     let material_name = o.material.take();
     let shape = shapes::shape(o, span, cx)?;
+    let material = material_index(material_name.as_ref(), materials, cx)?;
+    Ok((shape, material, line))
+}
 
-    let material = match &material_name {
-        None => 0,
-        Some(name) => materials
-            .iter()
-            .position(|m| m.name == *name.get_ref())
-            .ok_or_else(|| {
-                let defined: Vec<&str> =
-                    materials.iter().map(|m| m.name.as_str()).collect();
-                cx.error(
-                    name.span(),
-                    format!(
-                        "unknown material {:?}, defined: {}",
-                        name.get_ref(),
-                        defined.join(", ")
-                    ),
-                )
-            })?,
-    };
-
-    Ok(Object {
-        shape,
+/// An `[[instances]]` entry, checked, and its table's span.
+fn instance(
+    raw: Spanned<Table<RawInstance>>,
+    meshes: &BTreeMap<String, Spanned<Table<raw::RawMeshFile>>>,
+    materials: &[Material], cx: &Context,
+) -> Result<(Instance, Range<usize>), SceneError> {
+    let span = raw.span();
+    let Table(i) = raw.into_inner();
+    let line = cx.line_column(span.start).0;
+    let mesh = i.mesh.get_ref();
+    if !meshes.contains_key(mesh) {
+        let names: Vec<&str> = meshes.keys().map(String::as_str).collect();
+        let there = match names.is_empty() {
+            true => "none".to_owned(),
+            false => names.join(", "),
+        };
+        return Err(cx.error(
+            i.mesh.span(),
+            format!("no mesh {mesh:?} in [meshes]; there are {there}"),
+        ));
+    }
+    let placement =
+        scene_meshes::placement(i.scale, i.rotate, i.translate, cx)?;
+    let material = material_index(i.material.as_ref(), materials, cx)?;
+    let instance = Instance {
+        mesh: i.mesh.into_inner(),
+        placement,
         material,
         line,
-    })
+    };
+    Ok((instance, span))
+}
+
+/// The index of the material `name` (None: the default, 0).
+fn material_index(
+    name: Option<&Spanned<String>>, materials: &[Material], cx: &Context,
+) -> Result<usize, SceneError> {
+    let Some(name) = name else {
+        return Ok(0);
+    };
+    materials
+        .iter()
+        .position(|m| m.name == *name.get_ref())
+        .ok_or_else(|| {
+            let defined: Vec<&str> =
+                materials.iter().map(|m| m.name.as_str()).collect();
+            cx.error(
+                name.span(),
+                format!(
+                    "unknown material {:?}, defined: {}",
+                    name.get_ref(),
+                    defined.join(", ")
+                ),
+            )
+        })
 }

@@ -7,6 +7,8 @@ use std::path::Path;
 use raystep_core::{Aabb, DVec3};
 use thiserror::Error;
 
+use crate::obj_check::{ObjProblem, check_obj};
+
 /// Triangles sharing vertices: each triangle is three indices into
 /// `vertices`, counter-clockwise seen from outside.
 #[derive(Clone, Debug, PartialEq)]
@@ -15,6 +17,11 @@ pub struct Mesh {
     pub vertices: Vec<DVec3>,
     /// Three indices into `vertices` per triangle.
     pub triangles: Vec<[usize; 3]>,
+    /// The unit normal at each vertex (`normals[i]` at `vertices[i]`),
+    /// for smooth shading: from an OBJ's `vn`, normalised. Empty when the
+    /// mesh has none (an OBJ without `vn`, a scene's `smooth = false`, an
+    /// icosphere): then it is shaded flat, by each triangle's normal.
+    pub normals: Vec<DVec3>,
 }
 
 /// Why a mesh file cannot be read.
@@ -85,6 +92,7 @@ impl Mesh {
         let mut mesh = Mesh {
             vertices,
             triangles,
+            normals: Vec::new(),
         };
         for _ in 0..subdivisions {
             mesh = mesh.subdivided();
@@ -119,31 +127,51 @@ impl Mesh {
         Mesh {
             vertices,
             triangles,
+            normals: Vec::new(),
         }
     }
 
-    /// Reads the triangles of an OBJ file (polygons are split into fans).
+    /// Reads the triangles of an OBJ file (polygons are split into fans),
+    /// and its vertex normals (`vn`) where it has them.
     pub fn load_obj(path: &Path) -> Result<Mesh, MeshError> {
         let file = path.display().to_string();
+        let bytes = std::fs::read(path).map_err(|e| MeshError::Obj {
+            file: file.clone(),
+            message: e.to_string(),
+        })?;
+        Mesh::from_obj(bytes).map_err(|fault| match fault {
+            ObjFault::Empty => MeshError::Empty { file },
+            ObjFault::Line(problem) => MeshError::Obj {
+                file,
+                message: problem.to_string(),
+            },
+            ObjFault::File(message) => MeshError::Obj { file, message },
+        })
+    }
+
+    /// The mesh of an OBJ file's `bytes` ([`Mesh::load_obj`] without the
+    /// file: a scene names the file its own way).
+    pub(crate) fn from_obj(bytes: Vec<u8>) -> Result<Mesh, ObjFault> {
         let options = tobj::LoadOptions {
             triangulate: true,
+            // one index per corner: a vertex used with two normals
+            // becomes two vertices, so `normals[i]` belongs to
+            // `vertices[i]`
             single_index: true,
             ..tobj::LoadOptions::default()
         };
         // Step 1: the text, every line this reader uses checked first
         // (so that each error names its line).
-        let fail = |message: String| MeshError::Obj {
-            file: file.clone(),
-            message,
-        };
-        let bytes = std::fs::read(path).map_err(|e| fail(e.to_string()))?;
         let text = String::from_utf8(bytes).map_err(|e| {
             let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
             let line = 1 + valid.iter().filter(|&&b| b == b'\n').count();
-            fail(format!("line {line}: not UTF-8 text"))
+            ObjFault::Line(ObjProblem {
+                line,
+                what: "not UTF-8 text".to_owned(),
+            })
         })?;
-        if let Some(problem) = crate::obj_check::check_obj(&text) {
-            return Err(fail(problem));
+        if let Some(problem) = check_obj(&text) {
+            return Err(ObjFault::Line(problem));
         }
         // Step 2: the OBJ reader (no materials: the lecture's meshes
         // take theirs from the scene).
@@ -153,17 +181,22 @@ impl Mesh {
             &options,
             no_materials,
         )
-        .map_err(|e| fail(explain(&text, &e)))?;
+        .map_err(|e| explain(&text, &e))?;
+        // Step 3: the models' vertices, normals and triangles in one
+        // mesh, each model's indices moved past the vertices before it.
         let mut mesh = Mesh {
             vertices: Vec::new(),
             triangles: Vec::new(),
+            normals: Vec::new(),
+        };
+        let vec3 = |p: &[f32]| {
+            DVec3::new(f64::from(p[0]), f64::from(p[1]), f64::from(p[2]))
         };
         for model in models {
             let first = mesh.vertices.len();
             let m = model.mesh;
-            mesh.vertices.extend(m.positions.chunks_exact(3).map(|p| {
-                DVec3::new(f64::from(p[0]), f64::from(p[1]), f64::from(p[2]))
-            }));
+            mesh.vertices.extend(m.positions.chunks_exact(3).map(vec3));
+            mesh.normals.extend(m.normals.chunks_exact(3).map(vec3));
             mesh.triangles.extend(m.indices.chunks_exact(3).map(|t| {
                 [
                     first + t[0] as usize,
@@ -173,13 +206,33 @@ impl Mesh {
             }));
         }
         if mesh.triangles.is_empty() {
-            return Err(MeshError::Empty { file });
+            return Err(ObjFault::Empty);
         }
         if let Some(k) = mesh.vertices.iter().position(|v| !v.is_finite()) {
-            return Err(MeshError::Obj {
-                file,
-                message: format!("vertex {} is not finite", k + 1),
-            });
+            return Err(ObjFault::File(format!(
+                "vertex {} is not finite",
+                k + 1
+            )));
+        }
+        // Step 4: a unit normal per vertex, or none at all (check_obj
+        // refused a face that uses a zero normal, and corners with and
+        // without normals in one file).
+        if !mesh.normals.is_empty() {
+            if mesh.normals.len() != mesh.vertices.len() {
+                return Err(ObjFault::File(format!(
+                    "{} normals for {} vertices: normals on some faces only",
+                    mesh.normals.len(),
+                    mesh.vertices.len()
+                )));
+            }
+            for (k, n) in mesh.normals.iter_mut().enumerate() {
+                *n = n.try_normalize().ok_or_else(|| {
+                    ObjFault::File(format!(
+                        "the normal at vertex {} has no direction",
+                        k + 1
+                    ))
+                })?;
+            }
         }
         Ok(mesh)
     }
@@ -207,14 +260,27 @@ impl Mesh {
                 .map(|&v| centre + (v - middle) * scale)
                 .collect(),
             triangles: self.triangles.clone(),
+            // (a negative size turns the mesh inside out: its normals too)
+            normals: self.normals.iter().map(|&n| n * scale.signum()).collect(),
         }
     }
 }
 
+/// Why an OBJ file's text is not a mesh.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum ObjFault {
+    /// A line is to blame.
+    Line(ObjProblem),
+    /// No line is to blame; what is wrong.
+    File(String),
+    /// The file holds no triangle.
+    Empty,
+}
+
 /// What the OBJ reader's error means for the file's `text`: the first
 /// line that does not parse (the reader itself names no line). After
-/// [`check_obj`](crate::obj_check::check_obj) this is rare.
-fn explain(text: &str, error: &tobj::LoadError) -> String {
+/// [`check_obj`] this is rare.
+fn explain(text: &str, error: &tobj::LoadError) -> ObjFault {
     let mut vertices = 0usize;
     for (number, line) in text.lines().enumerate() {
         let mut words = line.split_whitespace();
@@ -234,10 +300,13 @@ fn explain(text: &str, error: &tobj::LoadError) -> String {
             _ => false,
         };
         if bad {
-            return format!("line {}: {error}: {}", number + 1, line.trim());
+            return ObjFault::Line(ObjProblem {
+                line: number + 1,
+                what: format!("{error}: {}", line.trim()),
+            });
         }
     }
-    format!("{error} (the OBJ reader names no line)")
+    ObjFault::File(format!("{error} (the OBJ reader names no line)"))
 }
 
 #[cfg(test)]

@@ -36,6 +36,10 @@ pub(crate) struct RawScene {
     pub materials: BTreeMap<String, Spanned<Table<RawMaterial>>>,
     #[serde(default)]
     pub objects: Vec<Spanned<Table<RawObject>>>,
+    #[serde(default)]
+    pub meshes: BTreeMap<String, Spanned<Table<RawMeshFile>>>,
+    #[serde(default)]
+    pub instances: Vec<Spanned<Table<RawInstance>>>,
 }
 
 #[derive(Deserialize)]
@@ -114,6 +118,8 @@ pub(crate) struct RawObject {
     pub torus: Option<Spanned<Table<RawTorus>>>,
     pub saddle: Option<Spanned<Table<RawSaddle>>>,
     pub blobby: Option<Spanned<Table<RawBlobby>>>,
+    // a triangle mesh from an OBJ file
+    pub mesh: Option<Spanned<Table<RawPlacedMesh>>>,
     pub material: Option<Spanned<String>>,
 }
 
@@ -198,6 +204,36 @@ pub(crate) struct RawBall {
     pub strength: Option<Spanned<Finite>>,
 }
 
+/// One `[meshes.NAME]` table: an OBJ file that `[[instances]]` place.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawMeshFile {
+    pub obj: Spanned<String>,
+    pub smooth: Option<bool>,
+}
+
+/// An object's `mesh = { … }`: an OBJ file placed once.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawPlacedMesh {
+    pub obj: Spanned<String>,
+    pub smooth: Option<bool>,
+    pub scale: Option<Spanned<Scale>>,
+    pub rotate: Option<Vec3>,
+    pub translate: Option<Vec3>,
+}
+
+/// One `[[instances]]` entry: a mesh of `[meshes]` placed once more.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawInstance {
+    pub mesh: Spanned<String>,
+    pub scale: Option<Spanned<Scale>>,
+    pub rotate: Option<Vec3>,
+    pub translate: Option<Vec3>,
+    pub material: Option<Spanned<String>>,
+}
+
 /// A struct that must be written as a TOML table.
 ///
 /// Serde's derived structs also accept a sequence of their fields in order
@@ -242,6 +278,14 @@ pub(crate) struct Vec3(pub DVec3);
 /// A colour: one number (grey) or `[r, g, b]`, each finite and `≥ 0`.
 #[derive(Clone, Copy)]
 pub(crate) struct Colour(pub DVec3);
+
+/// A scale: one finite number for all three axes, or `[x, y, z]`
+/// (`uniform` says which was written, for the error messages).
+#[derive(Clone, Copy)]
+pub(crate) struct Scale {
+    pub value: DVec3,
+    pub uniform: bool,
+}
 
 /// An index of refraction: a positive number or a name from
 /// [`REFRACTIVE_INDICES`].
@@ -385,6 +429,34 @@ impl<'de> Deserialize<'de> for Colour {
             ) -> Result<Colour, A::Error> {
                 let [r, g, b] = three::<Component, _>(seq, "[r, g, b]")?;
                 Ok(Colour(DVec3::new(r.0, g.0, b.0)))
+            }
+        }
+        deserializer.deserialize_any(V)
+    }
+}
+
+impl<'de> Deserialize<'de> for Scale {
+    fn deserialize<D: Deserializer<'de>>(
+        deserializer: D,
+    ) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = Scale;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a number or an array of 3 numbers [x, y, z]")
+            }
+            visit_numbers!(|v| finite(v).map(|v| Scale {
+                value: DVec3::splat(v),
+                uniform: true,
+            }));
+            fn visit_seq<A: SeqAccess<'de>>(
+                self, seq: A,
+            ) -> Result<Scale, A::Error> {
+                let [x, y, z] = three::<Finite, _>(seq, "[x, y, z]")?;
+                Ok(Scale {
+                    value: DVec3::new(x.0, y.0, z.0),
+                    uniform: false,
+                })
             }
         }
         deserializer.deserialize_any(V)

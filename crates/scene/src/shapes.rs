@@ -12,10 +12,11 @@ use crate::raw::{
     Finite, RawBlobby, RawBox, RawCylinder, RawEllipsoid, RawObject, RawPlane,
     RawPolygon, RawSaddle, RawSphere, RawTorus, RawTriangle, Table, Vec3,
 };
-use crate::{Ball, SceneError, Shape, TorusSolver, TriangleTest};
+use crate::scene_meshes::{MeshRequest, placement};
+use crate::{Ball, Placement, SceneError, Shape, TorusSolver, TriangleTest};
 
 /// Every shape key, in the order error messages list them.
-pub(crate) const KEYS: [&str; 10] = [
+pub(crate) const KEYS: [&str; 11] = [
     "sphere",
     "plane",
     "polygon",
@@ -26,12 +27,26 @@ pub(crate) const KEYS: [&str; 10] = [
     "torus",
     "saddle",
     "blobby",
+    "mesh",
 ];
+
+/// An object's shape: checked, or a mesh whose file is read once every
+/// field of the scene is checked.
+pub(crate) enum ObjectShape {
+    /// Any shape but a mesh.
+    Ready(Shape),
+    /// `mesh = { … }`, its table at `span`.
+    Mesh {
+        request: MeshRequest,
+        placement: Placement,
+        span: Range<usize>,
+    },
+}
 
 /// The one shape of `object`, whose table is at `span`.
 pub(crate) fn shape(
     o: RawObject, span: Range<usize>, cx: &Context,
-) -> Result<Shape, SceneError> {
+) -> Result<ObjectShape, SceneError> {
     let keys = [
         o.sphere.as_ref().map(Spanned::span),
         o.plane.as_ref().map(Spanned::span),
@@ -43,6 +58,7 @@ pub(crate) fn shape(
         o.torus.as_ref().map(Spanned::span),
         o.saddle.as_ref().map(Spanned::span),
         o.blobby.as_ref().map(Spanned::span),
+        o.mesh.as_ref().map(Spanned::span),
     ];
     let mut present: Vec<(&str, Range<usize>)> = KEYS
         .iter()
@@ -61,7 +77,7 @@ pub(crate) fn shape(
             ));
         }
         [] => {
-            let (last, others) = KEYS.split_last().expect("ten keys");
+            let (last, others) = KEYS.split_last().expect("eleven keys");
             let list: Vec<String> =
                 others.iter().map(|k| format!("`{k}`")).collect();
             return Err(cx.error(
@@ -73,7 +89,16 @@ pub(crate) fn shape(
             ));
         }
     }
-    if let Some(s) = o.sphere {
+    if let Some(m) = o.mesh {
+        let span = m.span();
+        let m = inner(m);
+        return Ok(ObjectShape::Mesh {
+            request: MeshRequest::new(m.obj, m.smooth, cx)?,
+            placement: placement(m.scale, m.rotate, m.translate, cx)?,
+            span,
+        });
+    }
+    let shape = if let Some(s) = o.sphere {
         sphere(inner(s), cx)
     } else if let Some(p) = o.plane {
         plane(inner(p), cx)
@@ -95,7 +120,8 @@ pub(crate) fn shape(
         blobby(inner(b), cx)
     } else {
         unreachable!("exactly one shape key is present")
-    }
+    };
+    shape.map(ObjectShape::Ready)
 }
 
 /// The number, if it is positive.

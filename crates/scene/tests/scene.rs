@@ -1,13 +1,15 @@
 //! Scene files: a complete scene, the defaults, named indices of
 //! refraction, and one test per kind of bad input with its exact message.
 
+use std::collections::BTreeMap;
 use std::path::Path;
+use std::sync::Arc;
 
 use raystep_core::DVec3;
 use raystep_scene::{
-    Ball, CameraSpec, Checker, Light, MAX_SIZE, Material, Object,
-    REFRACTIVE_INDICES, Scene, SceneError, Shape, TorusSolver, TriangleTest,
-    index_of_refraction, load, parse,
+    Ball, CameraSpec, Checker, Instance, Light, MAX_SIZE, Material, Mesh,
+    Object, Placement, REFRACTIVE_INDICES, Scene, SceneError, Shape,
+    TorusSolver, TriangleTest, index_of_refraction, load, parse,
 };
 
 const EXAMPLE: &str = include_str!("../src/example.toml");
@@ -35,6 +37,24 @@ fn framed() -> Scene {
         lights: vec![],
         materials: vec![],
         objects: vec![],
+        meshes: BTreeMap::new(),
+        instances: vec![],
+    }
+}
+
+/// `meshes/tetra.obj`, as the example's mesh object and instances read it.
+fn tetra() -> Mesh {
+    let corners = [
+        v(1.0, 1.0, 1.0),
+        v(1.0, -1.0, -1.0),
+        v(-1.0, 1.0, -1.0),
+        v(-1.0, -1.0, 1.0),
+    ];
+    Mesh {
+        vertices: corners.to_vec(),
+        triangles: vec![[0, 1, 2], [1, 3, 2], [0, 2, 3], [0, 3, 1]],
+        // each `vn` is its corner, normalised
+        normals: corners.iter().map(|c| c.normalize()).collect(),
     }
 }
 
@@ -195,10 +215,56 @@ fn the_complete_example_scene_reads_into_the_expected_values() {
                 material: 0,
                 line: 85,
             },
+            Object {
+                shape: Shape::Mesh {
+                    // smooth = false: the same mesh without its normals
+                    mesh: Arc::new(Mesh {
+                        normals: vec![],
+                        ..tetra()
+                    }),
+                    placement: Placement {
+                        scale: DVec3::splat(0.5),
+                        rotate: v(0.0, 90.0, 0.0),
+                        translate: v(0.0, 0.5, 0.0),
+                    },
+                },
+                material: 1,
+                line: 95,
+            },
+        ],
+        meshes: BTreeMap::from([("tetra".to_owned(), Arc::new(tetra()))]),
+        instances: vec![
+            Instance {
+                mesh: "tetra".into(),
+                placement: Placement {
+                    scale: v(1.0, 2.0, 1.0),
+                    rotate: v(0.0, 45.0, 0.0),
+                    translate: v(2.0, 0.0, 0.0),
+                },
+                material: 2,
+                line: 108,
+            },
+            Instance {
+                mesh: "tetra".into(),
+                placement: Placement {
+                    translate: v(-2.0, 0.0, 0.0),
+                    ..Placement::IDENTITY
+                },
+                material: 0,
+                line: 115,
+            },
         ],
         ..framed()
     };
     assert_eq!(scene, expected);
+    for instance in &scene.instances {
+        let header = EXAMPLE.lines().nth(instance.line - 1).unwrap();
+        assert!(
+            header.starts_with("[[instances]]"),
+            "line {}",
+            instance.line
+        );
+    }
     for object in &scene.objects {
         let header = EXAMPLE.lines().nth(object.line - 1).unwrap();
         assert!(header.starts_with("[[objects]]"), "line {}", object.line);
@@ -326,7 +392,7 @@ bad_inputs! {
         => "bad.toml:5:1: TOML syntax: duplicate key `vfov`";
     unknown_top_level_table:
         concat!(camera!(), "[light]\nposition = [1, 1, 1]\n")
-        => "bad.toml:4:2: light: unknown field, expected one of `image`, `camera`, `ambient`, `background`, `lights`, `materials`, `objects`";
+        => "bad.toml:4:2: light: unknown field, expected one of `image`, `camera`, `ambient`, `background`, `lights`, `materials`, `objects`, `meshes`, `instances`";
     unknown_camera_field:
         concat!(camera!(), "fov = 40\n")
         => "bad.toml:4:1: camera.fov: unknown field, expected one of `look_from`, `look_at`, `up`, `vfov`";
@@ -458,7 +524,7 @@ bad_inputs! {
         => "bad.toml:3:11: camera.look_at: too close to or too far from look_from to give a view direction (look_at - look_from = [inf, 0, 0])";
     object_without_a_shape:
         concat!(camera!(), "[[objects]]\nsphere = { center = [0, 0, 0], radius = 1 }\n[[objects]]\nmaterial = \"default\"\n")
-        => "bad.toml:6:1: objects[1]: needs a shape: one of `sphere`, `plane`, `polygon`, `box`, `cylinder`, `ellipsoid`, `triangle`, `torus`, `saddle` or `blobby`";
+        => "bad.toml:6:1: objects[1]: needs a shape: one of `sphere`, `plane`, `polygon`, `box`, `cylinder`, `ellipsoid`, `triangle`, `torus`, `saddle`, `blobby` or `mesh`";
     degenerate_box:
         concat!(camera!(), "[[objects]]\nbox = { min = [0, 0, 0], max = [1, 0, 1] }\n")
         => "bad.toml:5:32: objects[0].box.max: must be greater than min on every axis (a box with no volume is degenerate), got min = [0, 0, 0], max = [1, 0, 1]";
@@ -504,6 +570,52 @@ bad_inputs! {
     object_with_two_shapes:
         concat!(camera!(), "[[objects]]\nsphere = { center = [0, 0, 0], radius = 1 }\nplane = { point = [0, 0, 0], normal = [0, 1, 0] }\n")
         => "bad.toml:6:9: objects[0].plane: an object has exactly one shape, this one already has `sphere`";
+    // meshes: every field is checked before any OBJ file is read, so
+    // these files need not exist
+    zero_instance_scale:
+        concat!(camera!(), "[meshes.bunny]\nobj = \"bunny.obj\"\n",
+                "[[instances]]\nmesh = \"bunny\"\n[[instances]]\nmesh = \"bunny\"\nscale = 2\n",
+                "[[instances]]\nmesh = \"bunny\"\n[[instances]]\nmesh = \"bunny\"\nscale = [1, 0, 1]\n")
+        => "bad.toml:15:9: instances[3].scale: must not be 0, got [1, 0, 1]";
+    zero_object_mesh_scale:
+        concat!(camera!(), "[[objects]]\nmesh = { obj = \"tetra.obj\", scale = 0 }\n")
+        => "bad.toml:5:37: objects[0].mesh.scale: must not be 0, got 0";
+    nan_in_a_placement:
+        concat!(camera!(), "[meshes.bunny]\nobj = \"bunny.obj\"\n[[instances]]\nmesh = \"bunny\"\ntranslate = [1, nan, 0]\n")
+        => "bad.toml:8:17: instances[0].translate[1]: must be a finite number, got nan";
+    nan_mesh_scale:
+        concat!(camera!(), "[[objects]]\nmesh = { obj = \"tetra.obj\", scale = nan }\n")
+        => "bad.toml:5:37: objects[0].mesh.scale: must be a finite number, got nan";
+    infinite_rotation:
+        concat!(camera!(), "[[objects]]\nmesh = { obj = \"tetra.obj\", rotate = [0, inf, 0] }\n")
+        => "bad.toml:5:42: objects[0].mesh.rotate[1]: must be a finite number, got inf";
+    unknown_mesh_name:
+        concat!(camera!(), "[meshes.bunny]\nobj = \"bunny.obj\"\n[[instances]]\nmesh = \"bunyn\"\n")
+        => "bad.toml:7:8: instances[0].mesh: no mesh \"bunyn\" in [meshes]; there are bunny";
+    instance_without_meshes:
+        concat!(camera!(), "[[instances]]\nmesh = \"bunny\"\n")
+        => "bad.toml:5:8: instances[0].mesh: no mesh \"bunny\" in [meshes]; there are none";
+    unknown_material_in_an_instance:
+        concat!(camera!(), "[meshes.bunny]\nobj = \"bunny.obj\"\n[[instances]]\nmesh = \"bunny\"\nmaterial = \"clay\"\n")
+        => "bad.toml:8:12: instances[0].material: unknown material \"clay\", defined: default";
+    unknown_field_in_a_mesh:
+        concat!(camera!(), "[[objects]]\nmesh = { obj = \"tetra.obj\", rotation = [0, 90, 0] }\n")
+        => "bad.toml:5:29: objects[0].mesh.rotation: unknown field, expected one of `obj`, `smooth`, `scale`, `rotate`, `translate`";
+    unknown_field_in_a_named_mesh:
+        concat!(camera!(), "[meshes.bunny]\nobj = \"bunny.obj\"\nscale = 2\n")
+        => "bad.toml:6:1: meshes.bunny.scale: unknown field, expected `obj` or `smooth`";
+    unknown_field_in_an_instance:
+        concat!(camera!(), "[meshes.bunny]\nobj = \"bunny.obj\"\n[[instances]]\nmesh = \"bunny\"\nsmooth = false\n")
+        => "bad.toml:8:1: instances[0].smooth: unknown field, expected one of `mesh`, `scale`, `rotate`, `translate`, `material`";
+    missing_obj:
+        concat!(camera!(), "[meshes.bunny]\nsmooth = false\n")
+        => "bad.toml:4:1: meshes.bunny.obj: required, but missing";
+    empty_obj_path:
+        concat!(camera!(), "[[objects]]\nmesh = { obj = \"\" }\n")
+        => "bad.toml:5:16: objects[0].mesh.obj: must name an OBJ file, got \"\"";
+    object_mesh_by_name:
+        concat!(camera!(), "[[objects]]\nmesh = \"bunny\"\n")
+        => "bad.toml:5:8: objects[0].mesh: expected a table, got string \"bunny\"";
 }
 
 #[test]

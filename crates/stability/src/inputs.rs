@@ -131,15 +131,25 @@ fn bytes((input, reject): (String, bool)) -> (Vec<u8>, bool) {
     (input.into_bytes(), reject)
 }
 
+/// The small mesh the scene format's example names (`meshes/tetra.obj`).
+const TETRA: &str = include_str!("../../scene/meshes/tetra.obj");
+
 /// Mutated scenes, read by `raystep_scene::load`.
 fn scene_case(
     budget: &Budget, seed: u64, expect: Expect, mutate: SceneMutation,
 ) -> Vec<(Count, Expect)> {
     trials("scene parser", expect, budget, seed, "toml", |m, path| {
-        // Step 1: a seed, mutated, in a file.
+        // Step 1: a seed, mutated, in a file (beside the small mesh the
+        // format's example names, so a scene that may be taken can be).
         let seed = m.pick(&SCENES);
         let (input, reject) = mutate(m, seed);
         fs::write(path, &input).map_err(|e| e.to_string())?;
+        let meshes = path.with_file_name("meshes");
+        if !meshes.join("tetra.obj").exists() {
+            fs::create_dir_all(&meshes).map_err(|e| e.to_string())?;
+            fs::write(meshes.join("tetra.obj"), TETRA)
+                .map_err(|e| e.to_string())?;
+        }
         // Step 2: read it, a panic caught.
         match guarded(|| raystep_scene::load(path))? {
             Ok(_) if reject => Err("accepted".to_owned()),

@@ -62,6 +62,19 @@ pub enum WorldError {
         /// What is wrong.
         message: String,
     },
+    /// Something of the scene the chapter has not taught (chapters 3–7
+    /// and instances of meshes).
+    #[error("{file}:{line}: {field}: {message}")]
+    NotTaught {
+        /// The scene file.
+        file: String,
+        /// The line of the entry in it.
+        line: usize,
+        /// The entry: `instances[0]`.
+        field: String,
+        /// What the chapter does not do, and which does.
+        message: String,
+    },
 }
 
 /// Everything a render needs: the objects and how to search them, their

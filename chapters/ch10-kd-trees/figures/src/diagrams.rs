@@ -67,6 +67,7 @@ impl Thing {
                 Arc::new(TriangleMesh::new(&Mesh {
                     vertices,
                     triangles,
+                    normals: Vec::new(),
                 }))
             }
         };
