@@ -10,7 +10,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use raystep_core::{Aabb, DVec3, Hit, Interval, Ray};
 use raystep_render::{Image, Progress, RenderOptions};
-use raystep_world::{Accelerator, Object, World};
+use raystep_world::{Accelerate, Accelerator, Object, World};
 
 /// The brute-force loop with a box test in front of every object: an
 /// object whose bounds the ray misses within the interval is not asked.
@@ -286,6 +286,65 @@ fn every_tracer_gives_the_same_bytes_on_a_kd_tree() {
         }
     }
     assert!(compared >= 4 * 5 * 10);
+}
+
+/// What `raystep render --accel` builds for a list of objects: the
+/// lecture's loop, chapter 8's BVH (binned SAH), chapter 9's grid (the
+/// rule's resolution), chapter 10's kd-tree (SAH from events) and chapter
+/// 10's rule.
+const EVERY_ACCEL: [(&str, Accelerate); 5] = [
+    ("brute", |_| Arc::new(ch03::BruteForce)),
+    ("bvh", |objects| {
+        Arc::new(ch08::Bvh::for_objects(
+            objects,
+            ch08::Builder::BinnedSah { bins: 16 },
+        ))
+    }),
+    ("grid", |objects| {
+        Arc::new(ch09::Grid::for_objects(objects, ch09::Resolution::Rule))
+    }),
+    ("kdtree", |objects| {
+        Arc::new(ch10::KdTree::for_objects(
+            objects,
+            ch10::KdBuilder::SahEvents,
+            ch10::KdCosts::CHOSEN,
+        ))
+    }),
+    ("auto", ch10::auto),
+];
+
+/// Scenes of meshes (chapter 8's test scenes: small meshes flattened, and
+/// instanced beside a flattened one): every tracer gives the same image
+/// bytes and counts with every accelerator of `raystep render --accel`,
+/// which builds both levels of an instanced scene (each mesh's own
+/// structure, and the world's over the instances and other objects), as
+/// with the lecture's loop at both levels.
+#[test]
+fn mesh_scenes_give_the_same_bytes_on_every_accelerator() {
+    let folder =
+        workspace().join("chapters/ch08-bounding-volumes/tests/meshes");
+    let mut compared = 0;
+    for name in ["flattened.toml", "instanced.toml"] {
+        let path = folder.join(name);
+        let scene = raystep_scene::load(&path).unwrap();
+        let file = path.display().to_string();
+        let (_, brute) = EVERY_ACCEL[0];
+        let list = ch08::world_with(&scene, &file, brute).unwrap();
+        let expected = every_tracer(&list);
+        // the meshes are in the picture: without them it differs
+        let mut bare = list.clone();
+        bare.objects.truncate(1);
+        let (_, bare_image, _) = &every_tracer(&bare)[3];
+        assert_ne!(bare_image.to_srgb8(), expected[3].1.to_srgb8(), "{name}");
+        for (accel, accelerate) in &EVERY_ACCEL[1..] {
+            let world = ch08::world_with(&scene, &file, *accelerate)
+                .unwrap()
+                .accelerated(*accelerate);
+            let through = format!("--accel {accel} (both levels)");
+            compared += assert_same(&expected, &world, &through, &path);
+        }
+    }
+    assert_eq!(compared, 2 * 4 * 4);
 }
 
 /// Each ray a tracer counts is one question to the collection: a primary

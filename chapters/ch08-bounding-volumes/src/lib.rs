@@ -94,9 +94,22 @@ pub use raystep_core::Ray32;
 pub use raystep_world::{MeshAccelerator, MeshHit, TraceCounts};
 
 // ---------------------------------------------------------------------
-// Scene files: every primitive from TOML.
+// Part 2: meshes in scenes: smooth shading from vertex normals, a mesh
+// flattened into the world, and instances: a two-level hierarchy (the
+// world's accelerator over the instances, each mesh's own inside).
+// ---------------------------------------------------------------------
+
+pub use mesh::{
+    Blas, MeshInstance, PlacedTriangle, SmoothTriangle, barycentric,
+    placed_triangles,
+};
+pub use raystep_world::Accelerate;
+
+// ---------------------------------------------------------------------
+// Scene files: every primitive from TOML, and meshes: flattened, or
+// instanced with their own structures built as `--accel` asks.
 // ---------------------------------------------------------------------
 
 mod scene_shapes;
 
-pub use scene_shapes::{load, shape, world};
+pub use scene_shapes::{load, shape, world, world_with};

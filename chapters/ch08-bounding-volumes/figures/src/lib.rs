@@ -85,14 +85,18 @@ pub const CHAPTER: Chapter = Chapter::new(
 ])
 .renderer(render);
 
-/// `raystep render` with chapter 8's primitives, traced by chapter 6's
-/// tracer (reflection, refraction, exact Fresnel) over the brute-force
-/// loop; chapters 9 and 10 render with it too (`--accel grid`,
-/// `--accel kdtree` hand it their structures).
+/// `raystep render` with chapter 8's primitives and meshes, traced by
+/// chapter 6's tracer (reflection, refraction, exact Fresnel) over what
+/// `accelerate` builds (`--accel`: the brute-force loop by default);
+/// chapters 9 and 10 render with it too (`--accel grid`, `--accel kdtree`
+/// hand it their structures). In a scene with instances it builds both
+/// levels: each mesh's own structure, and the world's over the objects
+/// and instances.
 pub fn render(
     scene: &Scene, file: &str, options: &RenderOptions, accelerate: Accelerate,
 ) -> Result<Image, String> {
-    render_world(ch08::world(scene, file), accelerate, |world| {
+    let world = ch08::world_with(scene, file, accelerate);
+    render_world(world, accelerate, |world| {
         ch06_figures::render_exact(world, options)
     })
 }
