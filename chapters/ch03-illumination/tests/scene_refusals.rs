@@ -35,8 +35,10 @@ fn a_mesh_object_is_refused_naming_the_entry() {
     );
     let error = ch03::parse(&text, "scene.toml").unwrap_err().to_string();
     assert!(
-        error.starts_with("scene.toml:5: objects[0].mesh: a mesh is one of \
-                           chapter 8's primitives"),
+        error.starts_with(
+            "scene.toml:5: objects[0].mesh: a mesh is one of \
+                           chapter 8's primitives"
+        ),
         "{error}"
     );
 }

@@ -94,6 +94,55 @@ fn a_bad_scene_is_one_error_line_and_no_file() {
     }
 }
 
+/// Bad mesh input, each in one line naming the scene file (or the OBJ's
+/// own line), and no image: a missing OBJ, a malformed OBJ line, a NaN in
+/// a placement, a zero scale.
+#[test]
+fn bad_mesh_input_is_one_error_line_and_no_file() {
+    let dir = scratch("bad-mesh");
+    fs::create_dir_all(dir.join("meshes")).unwrap();
+    fs::write(
+        dir.join("meshes/bad.obj"),
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
+    )
+    .unwrap();
+    fs::write(
+        dir.join("meshes/tri.obj"),
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+    )
+    .unwrap();
+    let head = "[camera]\nlook_from = [0, 0, 5]\nlook_at = [0, 0, 0]\n\n";
+    let cases = [
+        (
+            "[[objects]]\nmesh = { obj = \"meshes/gone.obj\" }\n",
+            "objects[0].mesh.obj: cannot read meshes/gone.obj",
+        ),
+        (
+            "[[objects]]\nmesh = { obj = \"meshes/bad.obj\" }\n",
+            "objects[0].mesh.obj: meshes/bad.obj:4: vertex index 9",
+        ),
+        (
+            "[meshes.tri]\nobj = \"meshes/tri.obj\"\n\n[[instances]]\nmesh = \"tri\"\ntranslate = [0, nan, 0]\n",
+            "instances[0].translate[1]: must be a finite number, got nan",
+        ),
+        (
+            "[[objects]]\nmesh = { obj = \"meshes/tri.obj\", scale = [1, 0, 1] }\n",
+            "objects[0].mesh.scale: must not be 0, got [1, 0, 1]",
+        ),
+    ];
+    for (k, (body, wanted)) in cases.iter().enumerate() {
+        let file = dir.join(format!("scene-{k}.toml"));
+        fs::write(&file, format!("{head}{body}")).unwrap();
+        let stderr = refused(
+            file.to_str().unwrap(),
+            &dir.join("out.png"),
+            &["--chapter", "ch08"],
+        );
+        assert!(stderr.contains(&format!("scene-{k}.toml:")), "{stderr}");
+        assert!(stderr.contains(wanted), "{wanted}: {stderr}");
+    }
+}
+
 /// Chapter 7's scenes are rasterized; a scene with a sphere cannot be,
 /// and the error names the file and the object.
 #[test]

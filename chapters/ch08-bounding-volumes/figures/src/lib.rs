@@ -9,6 +9,7 @@ mod diagrams;
 pub mod measurements;
 mod questions;
 mod rows;
+mod scene_files;
 mod sketch;
 mod tightness_measure;
 mod torus_figure;
@@ -17,6 +18,7 @@ use raystep_figure::{Chapter, measurement, render_world};
 use raystep_render::{Image, RenderOptions};
 use raystep_scene::Scene;
 use raystep_world::Accelerate;
+pub use scene_files::{STEM_BUNNIES, bunnies_toml};
 
 pub use tightness_measure::{measure_tightness, tightness};
 

@@ -416,17 +416,19 @@ fn raster_analogy() -> Figure {
     )
 }
 
-/// The teapot in a stadium (`scenes/stadium.toml`): the render, and from
-/// above the grid's cells coloured by how many objects the fullest cell
-/// of each column lists.
+/// The teapot in a stadium (`scenes/teapot-in-stadium.toml`, the bunny
+/// from ../shared): the render, and from the side the grid's cells
+/// through the bunny coloured by how many objects each lists.
 fn stadium_heat() -> Figure {
-    let source = include_str!("../../scenes/stadium.toml");
-    let scene = raystep_scene::parse(source, "stadium.toml")
-        .expect("the chapter's scene parses");
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../scenes/teapot-in-stadium.toml");
+    let scene = raystep_scene::load(&path).expect(
+        "the chapter's scene loads (with ../shared beside the workspace)",
+    );
     let grid_of = |objects: &[Object]| -> Arc<dyn ch09::Accelerator> {
         Arc::new(Grid::for_objects(objects, Resolution::Rule))
     };
-    let world = ch08::world(&scene, "stadium.toml")
+    let world = ch08::world(&scene, "teapot-in-stadium.toml")
         .expect("the scene builds")
         .accelerated(grid_of);
     let options = RenderOptions {
@@ -443,9 +445,9 @@ fn stadium_heat() -> Figure {
     let grid = Grid::for_objects(&world.objects, Resolution::Rule);
     let lattice = grid.lattice;
     let [nx, ny, nz] = lattice.cells;
-    // the slice of cells through the teapot (at z = 0.3, the middle of
-    // its cube), seen from the side
-    let z = lattice.cell_of(DVec3::new(0.0, 0.5, 0.3))[2];
+    // the slice of cells through the teapot (at z = 0, through the
+    // middle of the bunny), seen from the side
+    let z = lattice.cell_of(DVec3::new(0.0, 0.5, 0.0))[2];
     let count =
         |x: usize, y: usize| grid.cell_objects(lattice.index([x, y, z])).len();
     let max = (0..nx)
@@ -454,8 +456,8 @@ fn stadium_heat() -> Figure {
         .max()
         .unwrap_or(1)
         .max(2);
-    // cells that list spheres of the teapot (objects 5 … 1004): in the
-    // whole grid, and in the slice drawn
+    // cells that list triangles of the teapot (the objects after the
+    // five boxes): in the whole grid, and in the slice drawn
     let teapot = |c: usize| grid.cell_objects(c).iter().any(|&k| k >= 5);
     let teapot_cells = (0..lattice.count()).filter(|&c| teapot(c)).count();
     let slice_cells = (0..nx)
@@ -539,8 +541,10 @@ fn stadium_heat() -> Figure {
     Figure::new(
         "stadium-heat",
         &format!(
-            "The teapot in a stadium (scenes/stadium.toml): 1 000 tiny spheres in a cube 0.6 wide, inside a box 200 wide with walls 50 high. The rule gives {nx} × {ny} × {nz} cells of {:.1} units for its 1 005 objects, so the 1 000 spheres crowd into {teapot_cells} cells, {slice_cells} of them in the slice drawn (up to {max} objects each there; colours on a log scale), while nearly every other cell is empty: a ray through the teapot tests hundreds of spheres, and a ray that misses it walks dozens of empty cells.",
-            lattice.size.x
+            "The teapot in a stadium (scenes/teapot-in-stadium.toml): the bunny's {} triangles at size 1, inside a box 200 wide with walls 50 high. The rule gives {nx} × {ny} × {nz} cells of {:.1} units for its {} objects, so the bunny's triangles crowd into {teapot_cells} cells, {slice_cells} of them in the slice drawn (up to {max} objects each there; colours on a log scale), while nearly every other cell is empty: a ray through the teapot tests hundreds of triangles, and a ray that misses it walks dozens of empty cells.",
+            world.objects.len() - 5,
+            lattice.size.x,
+            world.objects.len()
         ),
         page,
     )
