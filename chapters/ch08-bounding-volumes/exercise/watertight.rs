@@ -103,7 +103,7 @@ pub(crate) fn sheared_hit(
 /// Kahan's determinant ([`difference_of_products`]), and do so wherever
 /// the fast value is within its rounding error of 0, so its sign is never
 /// wrong — that is what keeps a shared *vertex* watertight as well.
-pub(crate) fn edge_function(p: DVec2, q: DVec2) -> f64 {
+fn edge_function(p: DVec2, q: DVec2) -> f64 {
     // TODO:
     // 1. left = p.x·q.y, right = p.y·q.x, fast = left − right.
     // 2. If |fast| > 2ε·(|left| + |right|) (ε = `f64::EPSILON`), its sign

@@ -3,30 +3,24 @@
 //! mesh of flat facets shades like the curved surface it approximates.
 use raystep_core::{Aabb, DVec3, Hit, Interval, Ray, Shape};
 
-use crate::primitives::edge_function;
-use crate::{Shear, Triangle, TriangleTest, watertight};
+use crate::{Triangle, TriangleTest, watertight};
 
 // ANCHOR: barycentric
-/// The barycentric coordinates (b₀, b₁, b₂) of the point where `ray`
-/// crosses the plane of the triangle `v`, as the watertight test weighs
-/// its corners: the hit is b₀V₀ + b₁V₁ + b₂V₂, with b₀ + b₁ + b₂ = 1.
-///
-/// For a ray that [`watertight`] says hits the triangle, each bᵢ is in
-/// [0, 1]: the test's edge functions all have one sign, and these are
-/// its very edge functions (each bᵢ = eᵢ / det, step 7's weights).
-pub fn barycentric(v: &[DVec3; 3], ray: &Ray) -> DVec3 {
-    // Steps 1–3 of the watertight test: the ray's shear, each corner
-    // sheared into the plane across the ray.
-    let shear = Shear::of(ray.direction);
-    let [a, b, c] = v.map(|vertex| shear.vertex(ray.origin, vertex).0);
-    // Step 4: the edge functions at the origin, eᵢ for the edge facing Vᵢ.
-    let e = DVec3::new(
-        edge_function(b, c),
-        edge_function(c, a),
-        edge_function(a, b),
-    );
-    // Step 7's weights: bᵢ = eᵢ / det, det = e₀ + e₁ + e₂.
-    e / (e.x + e.y + e.z)
+/// The barycentric coordinates (b₀, b₁, b₂) of the point `p` of the
+/// triangle `v`: p = b₀V₀ + b₁V₁ + b₂V₂, with b₀ + b₁ + b₂ = 1, each bᵢ
+/// the area of the triangle `p` makes with the edge facing Vᵢ over the
+/// whole triangle's area. For shading only: the hit itself is the
+/// watertight test's, and a hit on an edge, a rounding outside, is
+/// brought back onto it.
+pub fn barycentric(v: &[DVec3; 3], p: DVec3) -> DVec3 {
+    // Step 1: the normal, as long as twice the triangle's area.
+    let n = (v[1] - v[0]).cross(v[2] - v[0]);
+    // Step 2: twice each smaller triangle's area, signed along n.
+    let area = |a: DVec3, b: DVec3| (b - a).cross(p - a).dot(n);
+    let b = DVec3::new(area(v[1], v[2]), area(v[2], v[0]), area(v[0], v[1]));
+    // Step 3: over the whole, none below 0, summing to 1.
+    let b = (b / n.dot(n)).max(DVec3::ZERO);
+    b / b.element_sum()
 }
 // ANCHOR_END: barycentric
 
@@ -109,7 +103,7 @@ impl Shape for SmoothTriangle {
         let vertices = self.triangle.vertices();
         let t = watertight(vertices, ray, interval)?;
         // Step 2: where on the triangle, and the normal blended there.
-        let b = barycentric(vertices, ray);
+        let b = barycentric(vertices, ray.at(t));
         Some(Hit {
             t,
             point: ray.at(t),

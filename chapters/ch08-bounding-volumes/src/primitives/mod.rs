@@ -38,6 +38,3 @@ pub use watertight::watertight;
 // Steps 4–7 of the watertight test, which the fast walk of part 2 asks
 // with its own ray's shear.
 pub(crate) use watertight::sheared_hit;
-// Step 4's edge functions, whose ratios are the hit's barycentric
-// coordinates: part 2's smooth triangles interpolate their normals so.
-pub(crate) use watertight::edge_function;

@@ -133,7 +133,7 @@ pub(crate) fn sheared_hit(
 /// the fast value is within its rounding error of 0, so its sign is never
 /// wrong — that is what keeps a shared *vertex* watertight as well.
 #[inline]
-pub(crate) fn edge_function(p: DVec2, q: DVec2) -> f64 {
+fn edge_function(p: DVec2, q: DVec2) -> f64 {
     // Step 1: the fast value: two rounded products and their difference.
     let (left, right) = (p.x * q.y, p.y * q.x);
     let fast = left - right;
