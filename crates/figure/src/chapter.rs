@@ -55,13 +55,21 @@ pub type Renderer =
 
 /// What every chapter's [`Renderer`] does around its tracer: the scene's
 /// `world` (as the chapter builds it: chapter 3's shapes or chapter 8's),
-/// searched as `accelerate` says, drawn by `draw`; an error becomes its
-/// one line.
+/// searched as `accelerate` says (built as a stage of its own, shown on a
+/// terminal under `options`' progress rule), drawn by `draw`; an error
+/// becomes its one line.
 pub fn render_world<E: Display, F: Display>(
-    world: Result<World, E>, accelerate: Accelerate,
+    world: Result<World, E>, accelerate: Accelerate, options: &RenderOptions,
     draw: impl FnOnce(&World) -> Result<Image, F>,
 ) -> Result<Image, String> {
-    let world = world.map_err(|e| e.to_string())?.accelerated(accelerate);
+    let world = world.map_err(|e| e.to_string())?;
+    let what = format!(
+        "building the search structure over {} objects",
+        world.objects.len()
+    );
+    let world = raystep_render::stage(options.progress, &what, || {
+        world.accelerated(accelerate)
+    });
     draw(&world).map_err(|e| e.to_string())
 }
 

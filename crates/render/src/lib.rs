@@ -36,4 +36,4 @@ pub use color::{
 };
 pub use error::RenderError;
 pub use image_error::{ImageError, image_error};
-pub use parallel::{Progress, RenderOptions, render};
+pub use parallel::{Progress, RenderOptions, render, stage};

@@ -94,6 +94,38 @@ pub fn render(
     Ok(Image::from_pixels(width, height, pixels))
 }
 
+/// Runs `work`, a stage before the render (reading a mesh, building a
+/// search structure), shown on stderr as `what` with a spinner while it
+/// runs and its time when done, under the same rule as the bar (only on
+/// a terminal, unless `progress` says never).
+pub fn stage<T>(progress: Progress, what: &str, work: impl FnOnce() -> T) -> T {
+    let show = match progress {
+        Progress::Auto => std::io::stderr().is_terminal(),
+        Progress::Never => false,
+    };
+    if !show {
+        return work();
+    }
+    let spinner =
+        ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
+    // The template is a constant: it parses, or a test fails.
+    if let Ok(style) = ProgressStyle::with_template(STAGE_TEMPLATE) {
+        spinner.set_style(style);
+    }
+    spinner.set_message(what.to_string());
+    spinner.enable_steady_tick(std::time::Duration::from_millis(100));
+    let started = std::time::Instant::now();
+    let done = work();
+    spinner.finish_with_message(format!(
+        "{what}: {:.2} s",
+        started.elapsed().as_secs_f64()
+    ));
+    done
+}
+
+/// What a stage shows while it runs: a spinner and its name.
+const STAGE_TEMPLATE: &str = "{spinner} {msg}";
+
 /// What the bar shows: time so far, the bar, rows done, time left.
 const BAR_TEMPLATE: &str =
     "{elapsed_precise} [{wide_bar}] {pos}/{len} rows, {eta} left";
@@ -121,6 +153,13 @@ fn progress_bar(progress: Progress, rows: u32) -> ProgressBar {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_stage_returns_its_work_and_its_template_parses() {
+        assert!(ProgressStyle::with_template(STAGE_TEMPLATE).is_ok());
+        assert_eq!(stage(Progress::Never, "building", || 42), 42);
+        assert_eq!(stage(Progress::Auto, "building", || "done"), "done");
+    }
 
     /// Enough floating-point work that a different evaluation order would
     /// show: a little chaotic iteration per pixel.

@@ -18,7 +18,7 @@ pub const CHAPTER: Chapter = Chapter::new(
 // `raystep render` with chapter 3's tracer: the local model, every light
 // visible
 .renderer(|scene, file, options, accelerate| {
-    render_world(ch03::world(scene, file), accelerate, |world| {
+    render_world(ch03::world(scene, file), accelerate, options, |world| {
         ch03::render(world, ch03::Terms::All, options)
     })
 });

@@ -27,7 +27,10 @@ pub const CHAPTER: Chapter =
         // `raystep render` with chapter 4's tracer: shadow rays, with the
         // scale-aware offset against acne
         .renderer(|scene, file, options, accelerate| {
-            render_world(ch03::world(scene, file), accelerate, |world| {
-                ch04::render(world, ch04::Offset::ScaleAware, options)
-            })
+            render_world(
+                ch03::world(scene, file),
+                accelerate,
+                options,
+                |world| ch04::render(world, ch04::Offset::ScaleAware, options),
+            )
         });

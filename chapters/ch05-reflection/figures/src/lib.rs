@@ -27,7 +27,7 @@ pub const CHAPTER: Chapter = Chapter::new(
 // `raystep render` with chapter 5's tracer: recursive reflected
 // rays, stopped by contribution
 .renderer(|scene, file, options, accelerate| {
-    render_world(ch03::world(scene, file), accelerate, |world| {
+    render_world(ch03::world(scene, file), accelerate, options, |world| {
         let stop = &ch05::DEFAULT_STOP;
         ch05::render(world, stop, options).map(|(image, _)| image)
     })

@@ -24,9 +24,12 @@ pub const CHAPTER: Chapter =
             measurements::measure_fresnel
         )])
         .renderer(|scene, file, options, accelerate| {
-            render_world(ch03::world(scene, file), accelerate, |world| {
-                render_exact(world, options)
-            })
+            render_world(
+                ch03::world(scene, file),
+                accelerate,
+                options,
+                |world| render_exact(world, options),
+            )
         });
 
 /// Chapter 6's tracer as `raystep render` runs it: reflection and
