@@ -15,12 +15,15 @@ use crate::torus_figure;
 
 /// Every lecture figure of the chapter.
 pub fn all() -> Vec<Figure> {
-    vec![
+    let mut figures = vec![
         gallery(),
         bounds_sketch(),
         tightness(),
         torus_figure::torus_roots(),
-    ]
+        crate::instance_figure::instance_idea(),
+    ];
+    figures.extend(crate::mesh_figures::all());
+    figures
 }
 
 /// `scenes/primitives.toml`: the fast row above, the slow row below.

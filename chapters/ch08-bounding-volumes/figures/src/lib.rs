@@ -6,7 +6,12 @@ pub mod bvh_measurements;
 mod bvh_rows;
 mod charts;
 mod diagrams;
+mod instance_charts;
+mod instance_figure;
+pub mod instance_measurements;
+mod instance_rows;
 pub mod measurements;
+mod mesh_figures;
 mod questions;
 mod rows;
 mod scene_files;
@@ -46,6 +51,7 @@ pub const CHAPTER: Chapter = Chapter::new(
     bvh_charts::scaling_chart,
     bvh_charts::precision_chart,
     bvh_charts::zbuffer_chart,
+    instance_charts::instances_chart,
 ])
 .measurements(&[
     measurement!(
@@ -84,6 +90,12 @@ pub const CHAPTER: Chapter = Chapter::new(
         bvh_measurements::zbuffer_steps,
         bvh_measurements::measure_zbuffer
     ),
+    measurement!(
+        "ch08 instances",
+        "instances.csv",
+        instance_measurements::instance_steps,
+        instance_measurements::measure_instances
+    ),
 ])
 .renderer(render);
 
@@ -97,8 +109,22 @@ pub const CHAPTER: Chapter = Chapter::new(
 pub fn render(
     scene: &Scene, file: &str, options: &RenderOptions, accelerate: Accelerate,
 ) -> Result<Image, String> {
-    let world = ch08::world_with(scene, file, accelerate);
-    render_world(world, accelerate, |world| {
+    // Each mesh's own structure, built once, as a stage of its own.
+    let meshes = scene.meshes.len()
+        + scene
+            .objects
+            .iter()
+            .filter(|o| o.shape.kind() == "mesh")
+            .count();
+    let world = if meshes == 0 {
+        ch08::world_with(scene, file, accelerate)
+    } else {
+        let what = format!("building the structures of {meshes} meshes");
+        raystep_render::stage(options.progress, &what, || {
+            ch08::world_with(scene, file, accelerate)
+        })
+    };
+    render_world(world, accelerate, options, |world| {
         ch06_figures::render_exact(world, options)
     })
 }

@@ -8,6 +8,7 @@ use raystep_core::{Aabb, DVec3, Hit, Interval, Ray, Shape};
 
 use crate::Blas;
 
+// ANCHOR: instance
 /// One placement of a mesh: its shared [`Blas`], and the matrices that
 /// take the mesh to the world and back. Each is one object of the world,
 /// so the world's own accelerator (the top level, Bikker's TLAS) is built
@@ -47,6 +48,7 @@ impl MeshInstance {
         self.to_world
     }
 }
+// ANCHOR_END: instance
 
 // ANCHOR: instance_intersect
 /// An instance as an object of the world.
