@@ -8,6 +8,8 @@
 //! * `raystep render SCENE.toml` renders a scene file to a PNG;
 //! * `raystep check ch01` runs a chapter's tests in student mode and says,
 //!   exercise by exercise, what passes;
+//! * `raystep hint ch01 EXERCISE` shows an exercise's hints, one level
+//!   at a time;
 //! * `raystep grade SUBMISSIONS --chapter ch01` checks every student's
 //!   exercise files in a scratch copy of the workspace, into one table;
 //! * `raystep student-edition OUT` writes the workspace with only the
@@ -26,6 +28,7 @@ mod figures;
 mod git;
 mod grade;
 mod held_out;
+mod hint;
 mod limited_process;
 mod measure;
 mod process_group;
@@ -244,6 +247,19 @@ enum Command {
         /// per exercise, one for the other tests).
         #[arg(long, value_name = "FILE")]
         junit: Option<PathBuf>,
+    },
+    /// Show the hints for one exercise or paper question, each level
+    /// more concrete: 1 the idea, 2 the step usually missed, 3 the shape
+    /// of the code (or the working) without the code (or the answer).
+    Hint {
+        /// The chapter: `ch01`, `01` or `1`.
+        chapter: String,
+        /// The exercise (`line_through_points`) or paper question (`q1`).
+        exercise: String,
+        /// Show the hints up to this level.
+        #[arg(long, default_value_t = 1,
+              value_parser = clap::value_parser!(u8).range(1..=3))]
+        level: u8,
     },
     /// Check every student's exercise files in a scratch copy of the
     /// workspace, into one table of verdicts.
@@ -481,6 +497,15 @@ fn main() -> ExitCode {
             quiet,
             json,
             junit,
+        }),
+        Command::Hint {
+            chapter,
+            exercise,
+            level,
+        } => hint::run(&hint::Options {
+            chapter,
+            exercise,
+            level,
         }),
         Command::Grade {
             submissions,
