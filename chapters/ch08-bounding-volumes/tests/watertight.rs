@@ -269,30 +269,11 @@ fn a_ray_almost_in_the_plane_misses_or_hits_where_it_crosses() {
                 break tri;
             }
         };
-        let (e1, e2) = (tri[1] - tri[0], tri[2] - tri[0]);
-        // (u, w) of the origin and (du, dw) of the direction: the origin
-        // outside, the line through the inside
+        // the origin outside, the line through the inside, and the
+        // stretch of t where the ray is in the triangle
         let inside = (rng.uniform(0.1, 0.45), rng.uniform(0.1, 0.45));
         let angle = rng.uniform(0.0, std::f64::consts::TAU);
-        let step = (angle.cos(), angle.sin());
-        let start = (inside.0 - 3.0 * step.0, inside.1 - 3.0 * step.1);
-        let ray = Ray::new(
-            tri[0] + start.0 * e1 + start.1 * e2,
-            step.0 * e1 + step.1 * e2,
-        );
-        // the stretch of t where u ≥ 0, w ≥ 0 and u + w ≤ 1
-        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-        for (s, ds) in [
-            (start.0, step.0),
-            (start.1, step.1),
-            (1.0 - start.0 - start.1, -step.0 - step.1),
-        ] {
-            if ds > 0.0 {
-                lo = lo.max(-s / ds);
-            } else if ds < 0.0 {
-                hi = hi.min(-s / ds);
-            }
-        }
+        let (ray, lo, hi) = raystep_check::ray_in_plane(&tri, inside, angle);
         let t = watertight(&tri, &ray, Interval::UNIVERSE);
         assert!(
             t.is_none_or(|t| (lo - 1e-9..=hi + 1e-9).contains(&t)),

@@ -12,6 +12,7 @@
 
 pub mod held_out;
 mod image_compare;
+mod plane_rays;
 pub mod questions;
 mod round;
 mod seeded;
@@ -21,6 +22,7 @@ pub mod verdicts;
 pub use image_compare::{
     Tolerance, assert_image_matches, diff_dir, differing_pixels,
 };
+pub use plane_rays::ray_in_plane;
 pub use round::{num, num_places, vec2, vec3};
 pub use seeded::{seeded, unit_vector};
 pub use table::Table;

@@ -157,3 +157,37 @@ mod tests {
         );
     }
 }
+
+/// `x` with at most `decimals` decimals, trailing zeros dropped and never
+/// `-0`, with the ASCII minus (for LaTeX and TOML text, not for drawing):
+/// `0.5`, `12`, `-0.25`.
+pub fn trimmed(x: f64, decimals: usize) -> String {
+    let text = format!("{x:.decimals$}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".into()
+    } else {
+        text.into()
+    }
+}
+
+/// `(x, y, z)`, each [`trimmed`] to `decimals`.
+pub fn triple(v: raystep_core::DVec3, decimals: usize) -> String {
+    let [x, y, z] = v.to_array().map(|c| trimmed(c, decimals));
+    format!("({x}, {y}, {z})")
+}
+
+#[cfg(test)]
+mod trimmed_tests {
+    use super::*;
+
+    #[test]
+    fn trimmed_numbers_drop_zeros_and_the_sign_of_zero() {
+        assert_eq!(trimmed(0.5, 4), "0.5");
+        assert_eq!(trimmed(12.0, 3), "12");
+        assert_eq!(trimmed(-0.00001, 3), "0");
+        assert_eq!(trimmed(-0.8165, 2), "-0.82");
+        let v = raystep_core::DVec3::new(1.0, -2.5, 0.125);
+        assert_eq!(triple(v, 2), "(1, -2.5, 0.12)");
+    }
+}

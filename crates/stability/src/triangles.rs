@@ -333,31 +333,11 @@ fn in_the_plane(budget: &Budget) -> Vec<(Count, Expect)> {
             let z = uniform(rng, -1.0, 1.0);
             flat_triangle(rng, z)
         };
-        // Step 1: origin and direction in barycentric terms, (u, w) and
-        // (du, dw): the origin outside, the line through the inside.
-        let (e1, e2) = (v[1] - v[0], v[2] - v[0]);
+        // The origin outside, the line through the inside, and the
+        // stretch of t where the ray is in the triangle.
         let inside = (uniform(rng, 0.1, 0.45), uniform(rng, 0.1, 0.45));
         let angle = uniform(rng, 0.0, std::f64::consts::TAU);
-        let step = (angle.cos(), angle.sin());
-        let start = (inside.0 - 3.0 * step.0, inside.1 - 3.0 * step.1);
-        let ray = Ray::new(
-            v[0] + start.0 * e1 + start.1 * e2,
-            step.0 * e1 + step.1 * e2,
-        );
-        // Step 2: the stretch of t where u ≥ 0, w ≥ 0 and u + w ≤ 1.
-        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-        for (s, ds) in [
-            (start.0, step.0),
-            (start.1, step.1),
-            (1.0 - start.0 - start.1, -step.0 - step.1),
-        ] {
-            // s + t·ds ≥ 0
-            if ds > 0.0 {
-                lo = lo.max(-s / ds);
-            } else if ds < 0.0 {
-                hi = hi.min(-s / ds);
-            }
-        }
+        let (ray, lo, hi) = raystep_check::ray_in_plane(&v, inside, angle);
         TriangleTest::ALL.map(|test| {
             match hit_once(test, v, &ray, Interval::UNIVERSE) {
                 None => false,

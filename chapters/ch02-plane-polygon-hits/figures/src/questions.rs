@@ -6,6 +6,7 @@ use ch02::{
     DVec2, DVec3, Interval, Plane, Ray, RayPlane, edge_function, inside_convex,
     ray_plane,
 };
+use raystep_figure::numbers::{trimmed, triple};
 use raystep_figure::{ChoiceQuestion, NumberQuestion, Question};
 
 /// Every question, in the order the book asks them.
@@ -25,16 +26,9 @@ fn tilted_plane() -> Plane {
     }
 }
 
-/// A number as the worked answers write it: at most four decimals, no
-/// trailing zeros, never `-0`.
+/// A number as the worked answers write it: at most 4 decimals.
 fn num(x: f64) -> String {
-    let text = format!("{x:.4}");
-    let text = text.trim_end_matches('0').trim_end_matches('.');
-    if text == "-0" {
-        "0".into()
-    } else {
-        text.into()
-    }
+    trimmed(x, 4)
 }
 
 /// A number as a factor: in parentheses if negative.
@@ -55,9 +49,9 @@ fn plus(x: f64) -> String {
     }
 }
 
-/// `(x, y, z)`.
+/// `(x, y, z)`, as [`num`] writes each.
 fn point(v: DVec3) -> String {
-    format!("({}, {}, {})", num(v.x), num(v.y), num(v.z))
+    triple(v, 4)
 }
 
 /// `a \cdot x + b \cdot y + …`: the products of `n · v`, a zero component

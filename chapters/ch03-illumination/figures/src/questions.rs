@@ -5,6 +5,7 @@ use ch03::{
     DVec3, Interval, LightSample, Material, Ray, Sphere, reflect_light,
     shading_terms,
 };
+use raystep_figure::numbers::{trimmed, triple};
 use raystep_figure::{NumberQuestion, Question};
 
 /// Every question, in the order the book asks them.
@@ -16,21 +17,14 @@ pub fn all() -> Vec<Question> {
     ]
 }
 
-/// A number as the worked answers write it: at most four decimals, no
-/// trailing zeros, never `-0`.
+/// A number as the worked answers write it: at most 4 decimals.
 fn num(x: f64) -> String {
-    let text = format!("{x:.4}");
-    let text = text.trim_end_matches('0').trim_end_matches('.');
-    if text == "-0" {
-        "0".into()
-    } else {
-        text.into()
-    }
+    trimmed(x, 4)
 }
 
-/// `(x, y, z)`.
+/// `(x, y, z)`, as [`num`] writes each.
 fn point(v: DVec3) -> String {
-    format!("({}, {}, {})", num(v.x), num(v.y), num(v.z))
+    triple(v, 4)
 }
 
 /// Question 1: the nearer root of a ray and a sphere off its axis.

@@ -6,6 +6,7 @@ use ch04::{
     DVec3, Hit, INT_SCALE, Interval, Offset, Ray, World, offset_scale_aware,
     shadow,
 };
+use raystep_figure::numbers::{trimmed, triple};
 use raystep_figure::{ChoiceQuestion, NumberQuestion, Question};
 
 /// Every question, in the order the book asks them.
@@ -17,16 +18,9 @@ pub fn all() -> Vec<Question> {
     ]
 }
 
-/// A number as the worked answers write it: at most four decimals, no
-/// trailing zeros, never `-0`.
+/// A number as the worked answers write it: at most 4 decimals.
 fn num(x: f64) -> String {
-    let text = format!("{x:.4}");
-    let text = text.trim_end_matches('0').trim_end_matches('.');
-    if text == "-0" {
-        "0".into()
-    } else {
-        text.into()
-    }
+    trimmed(x, 4)
 }
 
 /// `m \cdot 10^{e}` with three significant digits (`10^{e}` for m = 1).
@@ -40,9 +34,9 @@ fn sci(x: f64) -> String {
     }
 }
 
-/// `(x, y, z)`.
+/// `(x, y, z)`, as [`num`] writes each.
 fn point(v: DVec3) -> String {
-    format!("({}, {}, {})", num(v.x), num(v.y), num(v.z))
+    triple(v, 4)
 }
 
 /// `[x, y, z]`, for a scene file.

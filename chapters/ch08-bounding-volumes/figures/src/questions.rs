@@ -8,6 +8,7 @@ use ch08::{
     Aabb, Bvh, BvhNode, DVec3, Hit, Interval, Object, Ray, SahCosts, Shape,
     Tightness, near_first_closest_hit, slab_test, split_cost,
 };
+use raystep_figure::numbers::{trimmed, triple};
 use raystep_figure::{ChoiceQuestion, NumberQuestion, Question};
 
 /// Every question, in the order the book asks them (part 1, then part 2).
@@ -20,20 +21,14 @@ pub fn all() -> Vec<Question> {
     ]
 }
 
-/// A number as the worked answers write it: at most three decimals.
+/// A number as the worked answers write it: at most 3 decimals.
 fn num(x: f64) -> String {
-    let text = format!("{x:.3}");
-    let text = text.trim_end_matches('0').trim_end_matches('.');
-    if text == "-0" {
-        "0".into()
-    } else {
-        text.into()
-    }
+    trimmed(x, 3)
 }
 
-/// A point or vector as the prompts write it: `(1, 0, 2)`.
+/// `(x, y, z)`, as [`num`] writes each.
 fn vector(v: DVec3) -> String {
-    format!("({}, {}, {})", num(v.x), num(v.y), num(v.z))
+    triple(v, 3)
 }
 
 /// Per axis, the two crossings of the slab's planes, the smaller first,

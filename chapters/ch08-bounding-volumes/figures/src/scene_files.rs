@@ -57,11 +57,5 @@ pub fn bunnies_toml(count: usize) -> String {
 /// A number with 3 decimals at most, trailing zeros dropped: short, and
 /// read back exactly as written.
 fn short(x: f64) -> String {
-    let s = format!("{x:.3}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".to_string()
-    } else {
-        s.to_string()
-    }
+    raystep_figure::numbers::trimmed(x, 3)
 }

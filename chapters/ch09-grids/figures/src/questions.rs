@@ -7,6 +7,7 @@ use ch09::{
     Aabb, DVec3, Interval, Lattice, RULE_FACTOR, Ray, Resolution, dda_setup,
     rule_cells, walk,
 };
+use raystep_figure::numbers::{trimmed, triple};
 use raystep_figure::{ChoiceQuestion, NumberQuestion, Question};
 
 /// Every question, in the order the book asks them.
@@ -14,20 +15,14 @@ pub fn all() -> Vec<Question> {
     vec![rule_cell_count(), second_row_crossing(), cells_visited()]
 }
 
-/// A number as the worked answers write it: at most three decimals.
+/// A number as the worked answers write it: at most 3 decimals.
 fn num(x: f64) -> String {
-    let text = format!("{x:.3}");
-    let text = text.trim_end_matches('0').trim_end_matches('.');
-    if text == "-0" {
-        "0".into()
-    } else {
-        text.into()
-    }
+    trimmed(x, 3)
 }
 
-/// A point or vector as the prompts write it: `(1, 0, 2)`.
+/// `(x, y, z)`, as [`num`] writes each.
 fn vector(v: DVec3) -> String {
-    format!("({}, {}, {})", num(v.x), num(v.y), num(v.z))
+    triple(v, 3)
 }
 
 /// Question 1: how many cells the resolution rule gives.

@@ -116,11 +116,5 @@ pub fn stadium_toml(bunny: &[[DVec3; 3]]) -> String {
 /// A number with 5 decimals at most, trailing zeros dropped: short, and
 /// read back exactly as written.
 fn short(x: f64) -> String {
-    let s = format!("{x:.5}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".to_string()
-    } else {
-        s.to_string()
-    }
+    raystep_figure::numbers::trimmed(x, 5)
 }
