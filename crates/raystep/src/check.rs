@@ -40,8 +40,8 @@ use crate::shown_path::relative;
 use crate::test_build::{Artifacts, build, cargo_program};
 use crate::test_run::run_built;
 use crate::{
-    atomic_file, chapters, compile_isolation, questions, report_formats,
-    submission_rules, workspace,
+    atomic_file, chapters, compile_isolation, progress_file, questions,
+    report_formats, submission_rules, workspace,
 };
 
 /// What `raystep check` was asked to do.
@@ -57,6 +57,10 @@ pub struct Options {
     pub quiet: bool,
     /// How long one test binary may run before it is killed.
     pub timeout: Duration,
+    /// How much memory the build and each test binary may ask for, in bytes.
+    pub memory: u64,
+    /// How much one test binary may print, in bytes.
+    pub output: u64,
     /// Also write the report as JSON to this file.
     pub json: Option<PathBuf>,
     /// Also write the report as JUnit XML to this file.
@@ -87,6 +91,11 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         target_dir: options.target_dir.clone(),
         quiet: options.quiet,
         timeout: options.timeout,
+        memory: options.memory,
+        output: options.output,
+        // The student's own code on the student's own machine.
+        sandbox: None,
+        copy: 0,
     };
     let report = check_chapter(&root, chapter, &run)?;
     println!("{} ({mode})", chapter.package);
@@ -104,6 +113,13 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     if let Some(path) = &options.junit {
         let junit = report_formats::junit(&heading, &report);
         atomic_file::write(path, junit.as_bytes())?;
+    }
+    // The student's verdicts, for `raystep progress` and `raystep watch`
+    // (only here: `grade` checks scratch copies, not the student's work).
+    if !options.reference
+        && let Err(error) = progress_file::record(&root, chapter.id, &report)
+    {
+        eprintln!("warning: the progress was not recorded: {error}");
     }
     Ok(if report.all_passed() {
         ExitCode::SUCCESS

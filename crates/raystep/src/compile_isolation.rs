@@ -103,6 +103,10 @@ pub fn check_others(
     let target = target_dir(root, run);
     let isolated = Run {
         target_dir: Some(target),
+        sandbox: run
+            .sandbox
+            .as_ref()
+            .map(|sandbox| sandbox.also_writable(scratch.path())),
         ..run.clone()
     };
     if !run.quiet {

@@ -29,11 +29,14 @@ use raystep_check::verdicts::{CargoFailure, advice, changed_snapshots};
 use crate::committed_stubs::{self, Stubs};
 use crate::compile_isolation::{blamed_files, compile_message};
 use crate::error::Error;
+use crate::grade_partial::Partial;
+pub use crate::grade_rows::{Graded, Ignored, Row};
 use crate::run_options::Run;
+use crate::sandbox::{self, Sandbox};
 use crate::shown_path::{relative, shown};
 use crate::{
-    atomic_file, check, held_out, questions, submission_rules, workspace,
-    workspace_copy,
+    atomic_file, check, grade_partial, held_out, process_group, questions,
+    submission_rules, workspace, workspace_copy,
 };
 
 /// What `raystep grade` was asked to do.
@@ -49,34 +52,20 @@ pub struct Options {
     pub json: Option<PathBuf>,
     /// How long one test binary may run.
     pub timeout: Duration,
+    /// How much memory the build and each test binary may ask for, in bytes.
+    pub memory: u64,
+    /// How much one test binary may print, in bytes.
+    pub output: u64,
+    /// Whether the student's build and tests run inside bubblewrap.
+    pub sandbox: sandbox::Mode,
+    /// How many students are graded at once.
+    pub jobs: u32,
+    /// Keep the rows an interrupted run graded (`FILE.csv.partial`).
+    pub resume: bool,
     /// A target folder to build in (kept); else one in the scratch folder.
     pub target_dir: Option<PathBuf>,
     /// The held-out cases' seed, to replay a run; else a new secret one.
     pub seed: Option<u64>,
-}
-
-/// One row of the table: a student's verdict on one exercise.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
-pub struct Row {
-    /// The student's folder name.
-    pub student: String,
-    /// The exercise.
-    pub exercise: String,
-    /// `passed`, `failed`, `not attempted`, `timed out`, `missing file`,
-    /// `refused` (the file names another file, the environment or the
-    /// operating system), `does not compile` (or `cargo failed`).
-    pub verdict: String,
-    /// The first failure (which test, where, why), if any.
-    pub message: String,
-}
-
-/// A file of a submission that was not taken.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
-pub struct Ignored {
-    /// The student's folder name (empty for a file beside the folders).
-    pub student: String,
-    /// The file, relative to the student's folder.
-    pub file: String,
 }
 
 /// The JSON document: the table and the files not taken.
@@ -122,17 +111,64 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         eprintln!("{line}");
     }
 
+    // What an interrupted run graded already, and its seed.
+    let partial_path = grade_partial::path(&options.out);
+    let left = if options.resume {
+        grade_partial::read(&partial_path, chapter.id)?
+    } else {
+        if partial_path.exists() {
+            eprintln!(
+                "note: {} from an earlier run is replaced (--resume keeps its rows)",
+                shown(&partial_path)
+            );
+        }
+        None
+    };
+    let kept: Vec<Graded> = left
+        .as_ref()
+        .map(|left| {
+            left.graded
+                .iter()
+                .filter(|g| students.iter().any(|(name, _)| *name == g.student))
+                .cloned()
+                .collect()
+        })
+        .unwrap_or_default();
+    let to_grade: Vec<(usize, &Student)> = students
+        .iter()
+        .enumerate()
+        .filter(|(_, (name, _))| !kept.iter().any(|g| g.student == *name))
+        .collect();
+    if !kept.is_empty() {
+        eprintln!(
+            "resuming: {} students graded already, {} to go",
+            kept.len(),
+            to_grade.len()
+        );
+    }
+
     let scratch = tempfile::Builder::new()
         .prefix("raystep-grade-")
         .tempdir()
         .map_err(|e| Error::io(&std::env::temp_dir(), e))?;
-    let copy = scratch.path().join("workspace");
-    eprintln!("copying the workspace to {}…", copy.display());
-    workspace_copy::copy_sources(&root, &copy, &[])?;
-    // No reference body of the graded chapter in the copy: its exercise
-    // modules in `src/` are the stubs too, as in the student edition.
-    stubs.write(&copy, chapter, true)?;
-    link_shared(&root, scratch.path());
+    // Ctrl-C (or a hang-up) removes it too.
+    let _removal = process_group::remove_on_interrupt(scratch.path());
+    // One copy of the workspace per student graded at once.
+    let jobs = (options.jobs as usize).clamp(1, to_grade.len().max(1));
+    let copies: Vec<PathBuf> = (0..jobs)
+        .map(|k| match k {
+            0 => scratch.path().join("workspace"),
+            k => scratch.path().join(format!("workspace-{}", k + 1)),
+        })
+        .collect();
+    for copy in &copies {
+        eprintln!("copying the workspace to {}…", copy.display());
+        workspace_copy::copy_sources(&root, copy, &[])?;
+        // No reference body of the graded chapter in the copy: its exercise
+        // modules in `src/` are the stubs too, as in the student edition.
+        stubs.write(copy, chapter, true)?;
+    }
+    let shared = link_shared(&root, scratch.path());
     // The held-out cases' judge: the reference, built in the instructor's
     // workspace; one secret seed for this run.
     let reference = held_out::build_reference(
@@ -148,53 +184,122 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
             held_out::held_out_name(chapter)
         );
     }
-    let seed = options.seed.unwrap_or_else(held_out::new_seed);
-    let run = Run {
-        reference: false,
-        target_dir: Some(
-            options
-                .target_dir
-                .clone()
-                .unwrap_or_else(|| scratch.path().join("target")),
-        ),
-        quiet: true,
-        timeout: options.timeout,
-    };
+    let seed = options
+        .seed
+        .or(left.as_ref().and_then(|left| left.held_out_seed))
+        .unwrap_or_else(held_out::new_seed);
+    let target = options
+        .target_dir
+        .clone()
+        .unwrap_or_else(|| scratch.path().join("target"));
+    // The student's build and tests see the scratch folder (the copies,
+    // the target folder, the answers) and the test data, nothing else of
+    // the instructor's.
+    let mut writable = vec![scratch.path().to_path_buf()];
+    writable.extend(options.target_dir.clone());
+    let sandbox = Sandbox::choose(options.sandbox, &writable, &shared)?;
+    let runs: Vec<Run> = (0..jobs)
+        .map(|k| Run {
+            reference: false,
+            target_dir: Some(target.clone()),
+            quiet: true,
+            timeout: options.timeout,
+            memory: options.memory,
+            output: options.output,
+            sandbox: sandbox.clone(),
+            copy: k as u32,
+        })
+        .collect();
+    let partial = Partial::start(
+        &partial_path,
+        chapter.id,
+        reference.is_some().then_some(seed),
+        &kept,
+    )?;
     eprintln!(
-        "grading {} students on {} (the first build takes a few minutes)",
-        students.len(),
-        chapter.package
+        "grading {} students on {}{} (the first build takes a few minutes)",
+        to_grade.len(),
+        chapter.package,
+        match jobs {
+            1 => String::new(),
+            n => format!(", {n} at once"),
+        }
     );
+
+    // Each worker takes the next student not yet taken, in its own copy.
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let graded = std::sync::Mutex::new(Vec::<Graded>::new());
+    let failed = std::sync::Mutex::new(None::<Error>);
+    let count = students.len();
+    std::thread::scope(|scope| {
+        for (copy, run) in copies.iter().zip(&runs) {
+            let (next, graded, failed) = (&next, &graded, &failed);
+            let (partial, stubs, code, to_grade) =
+                (&partial, &stubs, &code, &to_grade);
+            let (reference, root, scratch) =
+                (reference.as_deref(), &root, scratch.path());
+            scope.spawn(move || {
+                loop {
+                    if failed
+                        .lock()
+                        .unwrap_or_else(|e| e.into_inner())
+                        .is_some()
+                    {
+                        return;
+                    }
+                    let taken =
+                        next.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+                    let Some((i, (name, folder))) = to_grade.get(taken) else {
+                        return;
+                    };
+                    eprintln!("[{}/{count}] {name}", i + 1);
+                    let judge = reference.map(|reference| Judge {
+                        reference,
+                        seed,
+                        answers: scratch.join(format!("answers-{}.txt", i + 1)),
+                    });
+                    let result = grade_one(
+                        root,
+                        copy,
+                        chapter,
+                        stubs,
+                        name,
+                        folder,
+                        code,
+                        run,
+                        judge.as_ref(),
+                    )
+                    .and_then(|one| partial.add(&one).map(|()| one));
+                    match result {
+                        Ok(one) => graded
+                            .lock()
+                            .unwrap_or_else(|e| e.into_inner())
+                            .push(one),
+                        Err(error) => {
+                            let mut first = failed
+                                .lock()
+                                .unwrap_or_else(|e| e.into_inner());
+                            first.get_or_insert(error);
+                            return;
+                        }
+                    }
+                }
+            });
+        }
+    });
+    if let Some(error) = failed.into_inner().unwrap_or_else(|e| e.into_inner())
+    {
+        return Err(error);
+    }
+    // The table in the students' order, however the work was shared.
+    let mut all = kept;
+    all.extend(graded.into_inner().unwrap_or_else(|e| e.into_inner()));
     let mut rows = Vec::new();
-    for (i, (name, folder)) in students.iter().enumerate() {
-        eprintln!("[{}/{}] {name}", i + 1, students.len());
-        let submission = submission(folder, &code);
-        ignored.extend(submission.ignored.iter().map(|file| Ignored {
-            student: name.clone(),
-            file: file.clone(),
-        }));
-        let judge = reference.as_deref().map(|reference| Judge {
-            reference,
-            seed,
-            answers: scratch.path().join(format!("answers-{}.txt", i + 1)),
-        });
-        let verdicts = grade_student(
-            &root,
-            &copy,
-            chapter,
-            &stubs,
-            &submission,
-            &run,
-            judge.as_ref(),
-        )?;
-        rows.extend(verdicts.into_iter().map(
-            |(exercise, (verdict, message))| Row {
-                student: name.clone(),
-                exercise,
-                verdict,
-                message,
-            },
-        ));
+    for (name, _) in &students {
+        if let Some(one) = all.iter().find(|g| g.student == *name) {
+            rows.extend(one.rows.iter().cloned());
+            ignored.extend(one.ignored.iter().cloned());
+        }
     }
 
     atomic_file::write(&options.out, csv_table(&rows)?.as_bytes())?;
@@ -219,7 +324,42 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     let mut written = vec![shown(&options.out)];
     written.extend(options.json.as_deref().map(shown));
     println!("wrote {}", written.join(" and "));
+    partial.finish()?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// Grades one student (`name`, handing in `folder`) in the scratch
+/// workspace `copy`: their rows and the files of theirs not taken.
+#[allow(clippy::too_many_arguments)]
+fn grade_one(
+    root: &Path, copy: &Path, chapter: &Chapter, stubs: &Stubs, name: &str,
+    folder: &Path, code: &[String], run: &Run, judge: Option<&Judge>,
+) -> Result<Graded, Error> {
+    let submission = submission(folder, code);
+    let ignored = submission
+        .ignored
+        .iter()
+        .map(|file| Ignored {
+            student: name.to_string(),
+            file: file.clone(),
+        })
+        .collect();
+    let verdicts =
+        grade_student(root, copy, chapter, stubs, &submission, run, judge)?;
+    let rows = verdicts
+        .into_iter()
+        .map(|(exercise, (verdict, message))| Row {
+            student: name.to_string(),
+            exercise,
+            verdict,
+            message,
+        })
+        .collect();
+    Ok(Graded {
+        student: name.to_string(),
+        rows,
+        ignored,
+    })
 }
 
 /// A student's name (the folder's) and folder.
@@ -463,7 +603,7 @@ fn grade_student(
             runner,
             chapter.exercises,
             judge.seed,
-            run.timeout,
+            run,
             &judge.answers,
         )?,
         _ => BTreeMap::new(),
@@ -603,15 +743,16 @@ fn summary(chapter: &Chapter, exercises: &[String], rows: &[Row]) -> String {
 }
 
 /// Chapter 7's tests read `../shared/meshes` beside the workspace: the
-/// scratch workspace gets a link to the instructor's, if there is one.
-fn link_shared(root: &Path, scratch: &Path) {
+/// scratch workspace gets a link to the instructor's, if there is one
+/// (returned, for the sandbox to show it).
+fn link_shared(root: &Path, scratch: &Path) -> Vec<PathBuf> {
     let shared = root.join("..").join("shared");
-    if let Ok(shared) = shared.canonicalize() {
-        #[cfg(unix)]
-        let _ = std::os::unix::fs::symlink(shared, scratch.join("shared"));
-        #[cfg(not(unix))]
-        let _ = shared;
-    }
+    let Ok(shared) = shared.canonicalize() else {
+        return Vec::new();
+    };
+    #[cfg(unix)]
+    let _ = std::os::unix::fs::symlink(&shared, scratch.join("shared"));
+    vec![shared]
 }
 
 #[cfg(test)]

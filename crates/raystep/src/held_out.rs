@@ -22,7 +22,8 @@ use raystep_figure::Chapter;
 
 use crate::cargo_artifacts::examples;
 use crate::error::Error;
-use crate::limited_process::{Exit, Ran, describe_status, run_with_limit};
+use crate::limited_process::{Exit, Limits, Ran, run_with_limit};
+use crate::run_options::Run;
 use crate::test_build::cargo_program;
 
 /// The name of a chapter's held-out program: `examples/ch01_held_out.rs`
@@ -112,13 +113,14 @@ pub fn build_reference(
 }
 
 /// Each exercise's held-out verdict: the student's `runner` answers the
-/// cases of `seed` for each of `exercises` in a process of its own (for at
-/// most `limit` each; the answers are kept in `answers`), then the
-/// `reference` judges them.
+/// cases of `seed` for each of `exercises` in a process of its own (within
+/// the limits of `run`, in its sandbox if any; the answers are kept in
+/// `answers`), then the `reference` judges them.
 pub fn judge(
-    reference: &Path, runner: &Path, exercises: &[&str], seed: u64,
-    limit: Duration, answers: &Path,
+    reference: &Path, runner: &Path, exercises: &[&str], seed: u64, run: &Run,
+    answers: &Path,
 ) -> Result<BTreeMap<String, Verdict>, Error> {
+    let limit = run.timeout;
     let mut text = String::new();
     let mut stopped = BTreeMap::new();
     for exercise in exercises {
@@ -127,12 +129,11 @@ pub fn judge(
             .args(["answer", &seed.to_string(), exercise])
             .current_dir(answers.parent().unwrap_or(Path::new(".")))
             .env("RUST_BACKTRACE", "0");
-        let ran = run_with_limit(&mut answer, limit).map_err(|source| {
-            Error::Spawn {
+        let ran = run_with_limit(&mut run.contained(answer), run.limits())
+            .map_err(|source| Error::Spawn {
                 program: runner.display().to_string(),
                 source,
-            }
-        })?;
+            })?;
         // Only this exercise's lines: a program that prints another's
         // answers gains nothing.
         let prefix = format!("answer {exercise} ");
@@ -145,9 +146,23 @@ pub fn judge(
                 "the held-out program timed out after {} s",
                 limit.as_secs_f64()
             )),
+            Exit::OutputCut => Some(format!(
+                "the held-out program printed more than {} (limit, --output)",
+                crate::run_options::shown_size(run.output)
+            )),
+            Exit::Status(status)
+                if !status.success()
+                    && crate::limited_process::out_of_memory(&ran.stderr)
+                        .is_some() =>
+            {
+                Some(format!(
+                    "the held-out program ran out of memory (limit {}, --memory)",
+                    crate::run_options::shown_size(run.memory)
+                ))
+            }
             Exit::Status(status) if !status.success() => Some(format!(
                 "the held-out program stopped ({})",
-                describe_status(*status)
+                run.described(*status)
             )),
             Exit::Status(_) => None,
         };
@@ -162,11 +177,13 @@ pub fn judge(
         .args(["judge", &seed.to_string()])
         .arg(answers)
         .env("RUST_BACKTRACE", "0");
-    let Ran { stdout, exit, .. } = run_with_limit(&mut judge, JUDGE_LIMIT)
-        .map_err(|source| Error::Spawn {
-            program: reference.display().to_string(),
-            source,
-        })?;
+    let Ran { stdout, exit, .. } =
+        run_with_limit(&mut judge, Limits::time(JUDGE_LIMIT)).map_err(
+            |source| Error::Spawn {
+                program: reference.display().to_string(),
+                source,
+            },
+        )?;
     if !matches!(exit, Exit::Status(status) if status.success()) {
         return Err(Error::Usage(format!(
             "the reference's held-out program failed to judge ({}): {exit:?}",

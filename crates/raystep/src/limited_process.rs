@@ -1,13 +1,16 @@
-//! Running a process with a time limit: its output captured, and at the
-//! limit it is killed with every process it started (its process group);
-//! how it ended, said as cargo says it.
+//! Running a process under limits: time, memory and output. Its output is
+//! captured; at the time limit, or once it has printed more than the output
+//! limit, it is killed with every process it started (its process group),
+//! and when it ends by itself whatever it started and left running is
+//! killed too. How it ended, said as cargo says it.
 
 use std::io::{self, Read};
 use std::process::{Child, Command, ExitStatus, Stdio};
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, mpsc};
 use std::time::{Duration, Instant};
 
-use crate::process_group;
+use crate::{memory_limit, process_group};
 
 /// How a process run by [`run_with_limit`] ended.
 #[derive(Debug)]
@@ -17,6 +20,33 @@ pub(crate) enum Exit {
     /// It was still running at the limit, and was killed with every process
     /// of its process group.
     TimedOut,
+    /// It printed more than the output limit (stdout and stderr together),
+    /// and was killed with every process of its process group.
+    OutputCut,
+}
+
+/// What a process run by [`run_with_limit`] may use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Limits {
+    /// How long it may run.
+    pub time: Duration,
+    /// How many bytes of memory it (and each process it starts) may ask
+    /// for; see [`crate::memory_limit`].
+    pub memory: Option<u64>,
+    /// How many bytes it may print, stdout and stderr together; what comes
+    /// after is not kept.
+    pub output: Option<u64>,
+}
+
+impl Limits {
+    /// A time limit only.
+    pub fn time(time: Duration) -> Limits {
+        Limits {
+            time,
+            memory: None,
+            output: None,
+        }
+    }
 }
 
 /// What [`run_with_limit`] saw.
@@ -31,25 +61,39 @@ pub(crate) struct Ran {
     pub exit: Exit,
 }
 
-/// Runs `command` (stdin empty, stdout and stderr captured) for at
-/// most `limit`. On Unix the process leads a process group of its own, and
-/// at the limit the whole group is killed: the process and anything it
-/// started. Ctrl-C still stops it: raystep's terminal signals are forwarded
-/// to the group (see [`process_group`]).
+/// Runs `command` (stdin empty, stdout and stderr captured) within
+/// `limits`. On Unix the process leads a process group of its own: at the
+/// time limit, or past the output limit, the whole group is killed (the
+/// process and anything it started), and when the process ends by itself
+/// the rest of its group is killed before it is reaped. Ctrl-C still stops
+/// it: raystep's terminal signals are forwarded to the group (see
+/// [`process_group`]). The memory limit is the operating system's, set in
+/// the process before it starts ([`memory_limit`]).
 pub(crate) fn run_with_limit(
-    command: &mut Command, limit: Duration,
+    command: &mut Command, limits: Limits,
 ) -> io::Result<Ran> {
     command
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped());
-    process_group::prepare(command);
+    process_group::prepare(command)?;
+    if let Some(bytes) = limits.memory {
+        memory_limit::set(command, bytes);
+    }
     let mut child = command.spawn()?;
     let group = process_group::Group::new(&child);
 
-    let stdout = capture(child.stdout.take().expect("stdout is piped"));
-    let stderr = capture(child.stderr.take().expect("stderr is piped"));
-    let exit = wait_with_limit(&mut child, &group, Instant::now() + limit);
+    let budget = Arc::new(Budget::new(limits.output));
+    let stdout =
+        capture(child.stdout.take().expect("stdout is piped"), &budget);
+    let stderr =
+        capture(child.stderr.take().expect("stderr is piped"), &budget);
+    let exit = wait_with_limit(
+        &mut child,
+        &group,
+        Instant::now() + limits.time,
+        &budget,
+    );
     drop(group);
     let exit = exit?;
     Ok(Ran {
@@ -65,16 +109,54 @@ struct Captured {
     finished: mpsc::Receiver<()>,
 }
 
-fn capture(mut pipe: impl Read + Send + 'static) -> Captured {
+/// How many bytes the process may still print, over both pipes.
+struct Budget {
+    limit: Option<u64>,
+    printed: AtomicU64,
+}
+
+impl Budget {
+    fn new(limit: Option<u64>) -> Budget {
+        Budget {
+            limit,
+            printed: AtomicU64::new(0),
+        }
+    }
+
+    /// Counts `n` more bytes: how many of them may be kept.
+    fn take(&self, n: usize) -> usize {
+        let before = self.printed.fetch_add(n as u64, Ordering::SeqCst);
+        match self.limit {
+            None => n,
+            Some(limit) => usize::try_from(limit.saturating_sub(before))
+                .map_or(n, |left| left.min(n)),
+        }
+    }
+
+    /// Whether more than the limit has been printed.
+    fn exceeded(&self) -> bool {
+        self.limit
+            .is_some_and(|limit| self.printed.load(Ordering::SeqCst) > limit)
+    }
+}
+
+/// Reads `pipe` to its end on a thread of its own, keeping what `budget`
+/// allows (the rest is read and dropped, so the process is never blocked
+/// on a full pipe before it is killed).
+fn capture(
+    mut pipe: impl Read + Send + 'static, budget: &Arc<Budget>,
+) -> Captured {
     let bytes = Arc::new(Mutex::new(Vec::new()));
     let (done, finished) = mpsc::channel();
     let sink = Arc::clone(&bytes);
+    let budget = Arc::clone(budget);
     std::thread::spawn(move || {
         let mut buffer = [0; 8192];
         while let Ok(n @ 1..) = pipe.read(&mut buffer) {
+            let kept = budget.take(n);
             sink.lock()
                 .unwrap_or_else(|e| e.into_inner())
-                .extend_from_slice(&buffer[..n]);
+                .extend_from_slice(&buffer[..kept]);
         }
         let _ = done.send(());
     });
@@ -95,20 +177,31 @@ impl Captured {
     }
 }
 
-/// Waits for `child` until `deadline`, then kills its process group.
+/// Waits for `child` until `deadline` or until it has printed more than
+/// its `budget`, then kills its process group. When it ends by itself,
+/// what it left running in its group is killed before it is reaped.
 fn wait_with_limit(
     child: &mut Child, group: &process_group::Group, deadline: Instant,
+    budget: &Budget,
 ) -> io::Result<Exit> {
     let mut pause = Duration::from_millis(1);
     loop {
-        match child.try_wait() {
-            Ok(Some(status)) => return Ok(Exit::Status(status)),
-            Ok(None) => {}
+        match group.exited(child) {
+            Ok(true) => {
+                group.kill(child);
+                return Ok(Exit::Status(child.wait()?));
+            }
+            Ok(false) => {}
             Err(error) => {
                 group.kill(child);
                 let _ = child.wait();
                 return Err(error);
             }
+        }
+        if budget.exceeded() {
+            group.kill(child);
+            child.wait()?;
+            return Ok(Exit::OutputCut);
         }
         let now = Instant::now();
         if now >= deadline {
@@ -132,6 +225,20 @@ pub(crate) fn describe_status(status: ExitStatus) -> String {
         }
     }
     status.to_string()
+}
+
+/// How a process run inside the sandbox ended. The sandbox's first
+/// process reports a death by signal N as exit status 128 + N, so such a
+/// status is said as the signal it most likely was.
+pub(crate) fn describe_sandboxed_status(status: ExitStatus) -> String {
+    #[cfg(unix)]
+    if let Some(code @ 129..=192) = status.code() {
+        return format!(
+            "{} (exit status {code} from the sandbox)",
+            describe_signal(code - 128)
+        );
+    }
+    describe_status(status)
 }
 
 /// `signal: 6, SIGABRT: process abort signal`, with cargo's names.
@@ -163,6 +270,25 @@ fn describe_signal(signal: i32) -> String {
     format!("signal: {signal}, {name}")
 }
 
+/// The runtime's note when an allocation failed (the process then
+/// aborts): `memory allocation of 6442450944 bytes failed`, as `6 GiB`.
+pub(crate) fn out_of_memory(stderr: &str) -> Option<String> {
+    stderr.lines().find_map(|line| {
+        let bytes: u64 = line
+            .trim()
+            .strip_prefix("memory allocation of ")?
+            .strip_suffix(" bytes failed")?
+            .parse()
+            .ok()?;
+        let gib = bytes as f64 / (1u64 << 30) as f64;
+        Some(if gib >= 0.1 {
+            format!("it asked for {gib:.1} GiB at once")
+        } else {
+            format!("it asked for {bytes} bytes at once")
+        })
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -179,27 +305,19 @@ mod tests {
     fn a_process_past_its_limit_is_killed() {
         let ran = run_with_limit(
             Command::new("sleep").arg("30"),
-            Duration::from_millis(300),
+            Limits::time(Duration::from_millis(300)),
         )
         .unwrap();
         assert!(matches!(ran.exit, Exit::TimedOut), "{ran:?}");
     }
 
-    /// The processes a test binary started die with it.
+    /// Whether process `pid` has ended (or is a zombie nobody has reaped
+    /// yet), waiting up to 5 s: SIGKILL is delivered at once, but give the
+    /// kernel a moment all the same.
     #[cfg(target_os = "linux")]
-    #[test]
-    fn a_killed_process_takes_its_children_along() {
-        let ran = run_with_limit(
-            &mut shell("sleep 30 & echo $!; wait"),
-            Duration::from_millis(300),
-        )
-        .unwrap();
-        assert!(matches!(ran.exit, Exit::TimedOut), "{ran:?}");
-        let sleep: u32 = ran.stdout.trim().parse().expect("the child's pid");
-        // Dead (or a zombie nobody has reaped yet); SIGKILL is delivered at once,
-        // give the kernel a moment all the same.
+    fn ends(pid: u32) -> bool {
         let dead = || {
-            std::fs::read_to_string(format!("/proc/{sleep}/stat")).map_or(
+            std::fs::read_to_string(format!("/proc/{pid}/stat")).map_or(
                 true,
                 |stat| {
                     stat.rsplit_once(") ")
@@ -211,7 +329,106 @@ mod tests {
         while !dead() && Instant::now() < until {
             std::thread::sleep(Duration::from_millis(10));
         }
-        assert!(dead(), "sleep {sleep} outlived the kill");
+        dead()
+    }
+
+    /// The processes a test binary started die with it.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn a_killed_process_takes_its_children_along() {
+        let ran = run_with_limit(
+            &mut shell("sleep 30 & echo $!; wait"),
+            Limits::time(Duration::from_millis(300)),
+        )
+        .unwrap();
+        assert!(matches!(ran.exit, Exit::TimedOut), "{ran:?}");
+        let sleep: u32 = ran.stdout.trim().parse().expect("the child's pid");
+        assert!(ends(sleep), "sleep {sleep} outlived the kill");
+    }
+
+    /// A process that ends by itself leaves nothing running: a child it
+    /// left behind in its group is killed before the process is reaped.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn nothing_a_process_started_outlives_it() {
+        let ran = run_with_limit(
+            &mut shell("sleep 30 >/dev/null 2>&1 & echo $!"),
+            Limits::time(Duration::from_secs(30)),
+        )
+        .unwrap();
+        assert!(
+            matches!(ran.exit, Exit::Status(status) if status.success()),
+            "{ran:?}"
+        );
+        let sleep: u32 = ran.stdout.trim().parse().expect("the child's pid");
+        assert!(ends(sleep), "sleep {sleep} outlived its parent");
+    }
+
+    /// Printing without end is cut at the output limit: the process is
+    /// killed, and only the limit's bytes are kept.
+    #[cfg(unix)]
+    #[test]
+    fn a_flood_of_output_is_cut_at_the_limit() {
+        let limits = Limits {
+            output: Some(100_000),
+            ..Limits::time(Duration::from_secs(30))
+        };
+        let ran = run_with_limit(&mut shell("yes flood"), limits).unwrap();
+        assert!(matches!(ran.exit, Exit::OutputCut), "{:?}", ran.exit);
+        assert_eq!(ran.stdout.len() + ran.stderr.len(), 100_000);
+        assert!(ran.stdout.starts_with("flood\nflood\n"));
+        // Under the limit nothing is cut.
+        let ran = run_with_limit(&mut shell("echo fine"), limits).unwrap();
+        assert_eq!(ran.stdout, "fine\n");
+    }
+
+    /// Not a test of its own: the process [`memory_past_the_limit_is_refused`]
+    /// starts, which asks for 6 GiB at once when `RAYSTEP_TEST_HOG` is set.
+    #[test]
+    fn memory_hog() {
+        if std::env::var_os("RAYSTEP_TEST_HOG").is_some() {
+            let hog = vec![1u8; 6 << 30];
+            println!("held {} bytes", std::hint::black_box(hog).len());
+        }
+    }
+
+    /// A process that asks for more memory than its limit is refused it,
+    /// and the runtime says so as it aborts; within the limit it is not.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn memory_past_the_limit_is_refused() {
+        let hog = || {
+            let mut command = Command::new(std::env::current_exe().unwrap());
+            command
+                .args(["--exact", "limited_process::tests::memory_hog"])
+                .args(["--nocapture", "--test-threads", "1"])
+                .env("RAYSTEP_TEST_HOG", "1");
+            command
+        };
+        let limits = Limits {
+            memory: Some(1 << 30),
+            ..Limits::time(Duration::from_secs(60))
+        };
+        let ran = run_with_limit(&mut hog(), limits).unwrap();
+        assert!(
+            matches!(ran.exit, Exit::Status(status) if !status.success()),
+            "{ran:?}"
+        );
+        assert!(
+            ran.stderr
+                .contains("memory allocation of 6442450944 bytes failed"),
+            "{}",
+            ran.stderr
+        );
+        assert!(!ran.stdout.contains("held"), "{}", ran.stdout);
+        // The same process without the variable is well within the limit.
+        let mut small = hog();
+        small.env_remove("RAYSTEP_TEST_HOG");
+        let ran = run_with_limit(&mut small, limits).unwrap();
+        assert!(
+            matches!(ran.exit, Exit::Status(status) if status.success()),
+            "{ran:?}"
+        );
     }
 
     #[cfg(unix)]
@@ -219,7 +436,7 @@ mod tests {
     fn how_a_process_ended_is_said_as_cargo_says_it() {
         let ran = run_with_limit(
             &mut shell("echo partial; exit 3"),
-            Duration::from_secs(30),
+            Limits::time(Duration::from_secs(30)),
         )
         .unwrap();
         assert_eq!(ran.stdout, "partial\n");
@@ -229,7 +446,7 @@ mod tests {
         assert_eq!(describe_status(status), "exit status: 3");
         let ran = run_with_limit(
             &mut shell("kill -ABRT $$"),
-            Duration::from_secs(30),
+            Limits::time(Duration::from_secs(30)),
         )
         .unwrap();
         let Exit::Status(status) = ran.exit else {
@@ -240,5 +457,32 @@ mod tests {
             "signal: 6, SIGABRT: process abort signal"
         );
         assert_eq!(describe_signal(64), "signal: 64");
+        let ran = run_with_limit(
+            &mut shell("exit 134"),
+            Limits::time(Duration::from_secs(30)),
+        )
+        .unwrap();
+        let Exit::Status(status) = ran.exit else {
+            panic!("{ran:?}")
+        };
+        assert_eq!(
+            describe_sandboxed_status(status),
+            "signal: 6, SIGABRT: process abort signal (exit status 134 from the sandbox)"
+        );
+        assert_eq!(describe_status(status), "exit status: 134");
+    }
+
+    #[test]
+    fn out_of_memory_is_said_with_its_size() {
+        let stderr = "\nmemory allocation of 6442450944 bytes failed\n";
+        assert_eq!(
+            out_of_memory(stderr).as_deref(),
+            Some("it asked for 6.0 GiB at once")
+        );
+        assert_eq!(
+            out_of_memory("memory allocation of 4096 bytes failed").as_deref(),
+            Some("it asked for 4096 bytes at once")
+        );
+        assert_eq!(out_of_memory("thread 'x' panicked"), None);
     }
 }

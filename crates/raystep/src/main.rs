@@ -10,6 +10,10 @@
 //!   exercise by exercise, what passes;
 //! * `raystep hint ch01 EXERCISE` shows an exercise's hints, one level
 //!   at a time;
+//! * `raystep watch [ch01]` checks a chapter again on every save and shows
+//!   the first exercise not passed;
+//! * `raystep progress` shows every exercise's last verdict and what is
+//!   next;
 //! * `raystep grade SUBMISSIONS --chapter ch01` checks every student's
 //!   exercise files in a scratch copy of the workspace, into one table;
 //! * `raystep student-edition OUT` writes the workspace with only the
@@ -21,22 +25,29 @@ mod book;
 mod cargo_artifacts;
 mod chapters;
 mod check;
+mod check_child;
 mod committed_stubs;
 mod compile_isolation;
 mod error;
 mod figures;
 mod git;
 mod grade;
+mod grade_partial;
+mod grade_rows;
 mod held_out;
 mod hint;
 mod limited_process;
 mod measure;
+mod memory_limit;
 mod process_group;
+mod progress;
+mod progress_file;
 mod questions;
 mod reference_module;
 mod render;
 mod report_formats;
 mod run_options;
+mod sandbox;
 mod separate_artifacts;
 mod shown_path;
 mod stability;
@@ -46,6 +57,8 @@ mod test_build;
 #[cfg(test)]
 mod test_files;
 mod test_run;
+mod watch;
+mod watch_view;
 mod workspace;
 mod workspace_copy;
 
@@ -237,6 +250,17 @@ enum Command {
         #[arg(long, value_name = "SECS", value_parser = seconds,
               default_value_t = run_options::DEFAULT_TIMEOUT_SECS as f64)]
         timeout: f64,
+        /// Stop the build or a test binary that asks for more memory than
+        /// this (each process: the compiler, a test binary, what it starts);
+        /// its exercise fails, `out of memory (limit 2 GiB, --memory)`.
+        #[arg(long, value_name = "SIZE", value_parser = run_options::parse_size,
+              default_value = run_options::DEFAULT_MEMORY)]
+        memory: u64,
+        /// Stop a test binary that prints more than this (stdout and stderr
+        /// together); its exercise fails, `printed more than 8 MiB`.
+        #[arg(long, value_name = "SIZE", value_parser = run_options::parse_size,
+              default_value = run_options::DEFAULT_OUTPUT)]
+        output: u64,
         /// Do not echo cargo's progress on stderr.
         #[arg(long, short)]
         quiet: bool,
@@ -261,6 +285,23 @@ enum Command {
               value_parser = clap::value_parser!(u8).range(1..=3))]
         level: u8,
     },
+    /// Check a chapter now and again on every save in its `exercise/`
+    /// folder; show the first exercise not passed, with its message and
+    /// the hint to ask for, or what is next once the chapter passes.
+    ///
+    /// Each check is `raystep check CHAPTER` (it records the verdicts for
+    /// `raystep progress`); a save while one runs checks again when it
+    /// ends. Ctrl-C stops the running check and quits. On a terminal each
+    /// view replaces the last; otherwise they follow as plain lines.
+    Watch {
+        /// The chapter: `ch01`, `01` or `1` [default: the first with an
+        /// exercise or paper question not passed yet].
+        chapter: Option<String>,
+    },
+    /// Show every chapter's exercises and paper questions with the verdict
+    /// `raystep check` last gave them, what passed per chapter and
+    /// overall, and the next exercise to do.
+    Progress,
     /// Check every student's exercise files in a scratch copy of the
     /// workspace, into one table of verdicts.
     ///
@@ -298,6 +339,33 @@ enum Command {
         #[arg(long, value_name = "SECS", value_parser = seconds,
               default_value_t = run_options::DEFAULT_TIMEOUT_SECS as f64)]
         timeout: f64,
+        /// Stop the build or a test binary that asks for more memory than
+        /// this (each process: the compiler, a test binary, what it starts);
+        /// its exercise fails, `out of memory (limit 2 GiB, --memory)`.
+        #[arg(long, value_name = "SIZE", value_parser = run_options::parse_size,
+              default_value = run_options::DEFAULT_MEMORY)]
+        memory: u64,
+        /// Stop a test binary that prints more than this (stdout and stderr
+        /// together); its exercise fails, `printed more than 8 MiB`.
+        #[arg(long, value_name = "SIZE", value_parser = run_options::parse_size,
+              default_value = run_options::DEFAULT_OUTPUT)]
+        output: u64,
+        /// Build and run each student's code inside bubblewrap: no network,
+        /// only the scratch copy writable, the toolchain and cargo's registry
+        /// read-only, nothing else of the file system visible. `auto`: where
+        /// bubblewrap is installed and works, else with one warning.
+        #[arg(long, value_enum, default_value_t = sandbox::Mode::Auto)]
+        sandbox: sandbox::Mode,
+        /// Grade this many students at once, each in a scratch copy of its
+        /// own (the table is the same as one at a time).
+        #[arg(long, short, value_name = "N", default_value_t = 1,
+              value_parser = clap::value_parser!(u32).range(1..=16))]
+        jobs: u32,
+        /// Keep the rows of the students an interrupted run (Ctrl-C, a
+        /// crash) had graded, kept beside the table in FILE.csv.partial,
+        /// and grade only the others.
+        #[arg(long)]
+        resume: bool,
         /// Build in this target directory, kept for the next run [env:
         /// RAYSTEP_CHECK_TARGET_DIR; default: one inside the scratch copy,
         /// removed at the end].
@@ -486,6 +554,8 @@ fn main() -> ExitCode {
             reference,
             target_dir,
             timeout,
+            memory,
+            output,
             quiet,
             json,
             junit,
@@ -494,6 +564,8 @@ fn main() -> ExitCode {
             reference,
             target_dir: check_target_dir(target_dir),
             timeout: Duration::from_secs_f64(timeout),
+            memory,
+            output,
             quiet,
             json,
             junit,
@@ -513,6 +585,11 @@ fn main() -> ExitCode {
             out,
             json,
             timeout,
+            memory,
+            output,
+            sandbox,
+            jobs,
+            resume,
             target_dir,
             held_out_seed,
         } => grade::run(&grade::Options {
@@ -521,9 +598,16 @@ fn main() -> ExitCode {
             out,
             json,
             timeout: Duration::from_secs_f64(timeout),
+            memory,
+            output,
+            sandbox,
+            jobs,
+            resume,
             target_dir: check_target_dir(target_dir),
             seed: held_out_seed,
         }),
+        Command::Watch { chapter } => watch::run(chapter.as_deref()),
+        Command::Progress => progress::run(),
         Command::StudentEdition { out } => student_edition::run(&out),
     };
     match result {

@@ -1,8 +1,15 @@
 //! How to build and run one chapter's tests: the options `raystep check`
-//! and `raystep grade` share.
+//! and `raystep grade` share, and the limits a student's code runs under.
 
 use std::path::PathBuf;
 use std::time::Duration;
+
+use std::process::{Command, ExitStatus};
+
+use crate::limited_process::{
+    Limits, describe_sandboxed_status, describe_status,
+};
+use crate::sandbox::Sandbox;
 
 /// How to build and run one chapter's tests (`raystep check` and `raystep
 /// grade` alike).
@@ -16,6 +23,43 @@ pub struct Run {
     pub quiet: bool,
     /// How long one test binary may run before it is killed.
     pub timeout: Duration,
+    /// How much memory the build and each test binary may ask for
+    /// (`--memory`), in bytes.
+    pub memory: u64,
+    /// How much one test binary may print (`--output`), in bytes.
+    pub output: u64,
+    /// Where the build and the tests run: inside bubblewrap, or as they are.
+    pub sandbox: Option<Sandbox>,
+    /// Which copy of the workspace this is, when several build into one
+    /// target folder at once (`raystep grade --jobs`): 0 for the first.
+    pub copy: u32,
+}
+
+impl Run {
+    /// The limits of one test binary (or held-out program) of the student.
+    pub fn limits(&self) -> Limits {
+        Limits {
+            time: self.timeout,
+            memory: Some(self.memory),
+            output: Some(self.output),
+        }
+    }
+
+    /// `command` inside the sandbox, if there is one.
+    pub fn contained(&self, command: Command) -> Command {
+        match &self.sandbox {
+            Some(sandbox) => sandbox.wrap(command),
+            None => command,
+        }
+    }
+
+    /// How a process of this run ended, as cargo says it.
+    pub fn described(&self, status: ExitStatus) -> String {
+        match self.sandbox {
+            Some(_) => describe_sandboxed_status(status),
+            None => describe_status(status),
+        }
+    }
 }
 
 /// The default of `--timeout`, in seconds. The slowest test binaries of the
@@ -24,3 +68,73 @@ pub struct Run {
 /// margin for a slow machine and a slow but correct student solution, and
 /// still ends an endless loop in reasonable time.
 pub const DEFAULT_TIMEOUT_SECS: u64 = 60;
+
+/// The default of `--memory`. The reference's test binaries use under
+/// 100 MiB, and the compiler under 300 MiB for the largest chapter; 2 GiB
+/// leaves room for a wasteful but correct solution, and stops a loop that
+/// collects without end long before the machine (24 GiB here) swaps.
+pub const DEFAULT_MEMORY: &str = "2GiB";
+
+/// The default of `--output`: libtest prints each failing test's captured
+/// output, a few KiB for the chapters' tests; 8 MiB is a flood.
+pub const DEFAULT_OUTPUT: &str = "8MiB";
+
+/// A size as `--memory` and `--output` take it: a whole number of bytes
+/// with `KiB`, `MiB` or `GiB` (or `K`, `M`, `G`) after it, or none.
+pub fn parse_size(arg: &str) -> Result<u64, String> {
+    let arg = arg.trim();
+    let split = arg.find(|c: char| !c.is_ascii_digit()).unwrap_or(arg.len());
+    let (number, unit) = arg.split_at(split);
+    let shift = match unit.trim() {
+        "" | "B" => 0,
+        "K" | "KiB" => 10,
+        "M" | "MiB" => 20,
+        "G" | "GiB" => 30,
+        _ => {
+            return Err(format!(
+                "`{arg}` is not a size: write it as 2GiB, 512MiB or 64KiB"
+            ));
+        }
+    };
+    let number: u64 = number.parse().map_err(|_| {
+        format!("`{arg}` is not a size: write it as 2GiB, 512MiB or 64KiB")
+    })?;
+    match number.checked_mul(1 << shift) {
+        Some(0) => Err("a size of 0 leaves no room at all".to_string()),
+        Some(bytes) => Ok(bytes),
+        None => Err(format!("`{arg}` is too large")),
+    }
+}
+
+/// A size as the verdicts say it: `2 GiB`, `512 MiB`, `100000 bytes`.
+pub fn shown_size(bytes: u64) -> String {
+    for (shift, unit) in [(30, "GiB"), (20, "MiB"), (10, "KiB")] {
+        if bytes >= 1 << shift && bytes.is_multiple_of(1 << shift) {
+            return format!("{} {unit}", bytes >> shift);
+        }
+    }
+    format!("{bytes} bytes")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_are_read_and_said_in_binary_units() {
+        assert_eq!(parse_size("2GiB"), Ok(2 << 30));
+        assert_eq!(parse_size("512M"), Ok(512 << 20));
+        assert_eq!(parse_size("64 KiB"), Ok(64 << 10));
+        assert_eq!(parse_size("1000"), Ok(1000));
+        assert!(parse_size("2GB").unwrap_err().contains("2GiB"));
+        assert!(parse_size("lots").is_err());
+        assert!(parse_size("0").is_err());
+        assert!(parse_size("99999999999G").is_err());
+        assert_eq!(shown_size(2 << 30), "2 GiB");
+        assert_eq!(shown_size(8 << 20), "8 MiB");
+        assert_eq!(shown_size(3 << 10), "3 KiB");
+        assert_eq!(shown_size(100_000), "100000 bytes");
+        let defaults = [DEFAULT_MEMORY, DEFAULT_OUTPUT].map(parse_size);
+        assert_eq!(defaults, [Ok(2 << 30), Ok(8 << 20)]);
+    }
+}

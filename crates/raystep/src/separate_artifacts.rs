@@ -18,11 +18,14 @@ use raystep_check::verdicts::lexically_normal;
 /// insta uses to find the snapshots). Built with a setting of their own
 /// (`codegen-units = 256`, which changes how rustc splits the work, not
 /// what the code does), the workspace's crates get artifacts of their own;
-/// dependencies from crates.io are still shared. Nothing is added when the
-/// target folder is the workspace's `target/` (the usual case), or when the
-/// members cannot be read.
+/// dependencies from crates.io are still shared. Copies that build into
+/// the same folder at once (`raystep grade --jobs`) are told apart by
+/// `copy` (0, 1, …): each has a count of its own (256, 254, …), and the
+/// odd counts below each are left for [`own_package`]. Nothing is added
+/// when the target folder is the workspace's `target/` (the usual case), or
+/// when the members cannot be read.
 pub fn separate_artifacts(
-    root: &Path, target_dir: Option<&Path>,
+    root: &Path, target_dir: Option<&Path>, copy: u32,
 ) -> Vec<String> {
     let target = target_dir
         .map(Path::to_path_buf)
@@ -45,12 +48,33 @@ pub fn separate_artifacts(
             .flat_map(|name| {
                 [
                     "--config".to_string(),
-                    format!("profile.dev.package.\"{name}\".codegen-units=256"),
+                    format!(
+                        "profile.dev.package.\"{name}\".codegen-units={}",
+                        codegen_units(copy)
+                    ),
                 ]
             })
             .collect(),
         _ => Vec::new(),
     }
+}
+
+/// The codegen units of copy `copy`'s own crates: 256, 254, …
+fn codegen_units(copy: u32) -> u32 {
+    256 - 2 * copy.min(100)
+}
+
+/// The setting that gives `package` of copy `copy` artifacts apart from
+/// every copy's other crates (`crate::test_build::Artifacts::OwnPackage`):
+/// one codegen unit fewer than the copy's.
+pub fn own_package(package: &str, copy: u32) -> [String; 2] {
+    [
+        "--config".to_string(),
+        format!(
+            "profile.dev.package.\"{package}\".codegen-units={}",
+            codegen_units(copy) - 1
+        ),
+    ]
 }
 
 /// The package names of the workspace's members (its root `Cargo.toml`
@@ -96,10 +120,10 @@ mod tests {
         write("crates/a/Cargo.toml", "[package]\nname = \"a-core\"\n");
         write("chapters/b/Cargo.toml", "[package]\nname = \"ch09-b\"\n");
         assert!(
-            separate_artifacts(root, Some(&root.join("target"))).is_empty()
+            separate_artifacts(root, Some(&root.join("target")), 0).is_empty()
         );
         assert_eq!(
-            separate_artifacts(root, Some(Path::new("/elsewhere/target"))),
+            separate_artifacts(root, Some(Path::new("/elsewhere/target")), 0),
             [
                 "--config",
                 "profile.dev.package.\"a-core\".codegen-units=256",
@@ -107,8 +131,23 @@ mod tests {
                 "profile.dev.package.\"ch09-b\".codegen-units=256",
             ]
         );
+        // A second copy building at once: counts of its own, for the
+        // workspace and for the package compiled apart.
+        assert_eq!(
+            separate_artifacts(root, Some(Path::new("/elsewhere/target")), 1)
+                [1],
+            "profile.dev.package.\"a-core\".codegen-units=254"
+        );
+        assert_eq!(
+            own_package("ch09-b", 1)[1],
+            "profile.dev.package.\"ch09-b\".codegen-units=253"
+        );
+        assert_eq!(
+            own_package("ch09-b", 0)[1],
+            "profile.dev.package.\"ch09-b\".codegen-units=255"
+        );
         // Unreadable members: nothing to add.
         write("Cargo.toml", "[workspace\n");
-        assert!(separate_artifacts(root, Some(Path::new("/x"))).is_empty());
+        assert!(separate_artifacts(root, Some(Path::new("/x")), 0).is_empty());
     }
 }

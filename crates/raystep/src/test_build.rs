@@ -13,7 +13,8 @@ use raystep_check::verdicts::{
 use crate::cargo_artifacts::{Executable, examples, test_executables};
 use crate::error::Error;
 use crate::run_options::Run;
-use crate::separate_artifacts::separate_artifacts;
+use crate::separate_artifacts::{own_package, separate_artifacts};
+use crate::{memory_limit, process_group};
 
 /// What a test build built to run: the test binaries, and the examples by
 /// name.
@@ -69,36 +70,48 @@ pub(crate) fn build(
         .env("CARGO_TERM_VERBOSE", "false")
         .env("CARGO_TERM_COLOR", "never")
         .env("CARGO_TERM_PROGRESS_WHEN", "never")
-        .env("CARGO_TERM_HYPERLINKS", "false")
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped());
+        .env("CARGO_TERM_HYPERLINKS", "false");
     if let Some(dir) = &options.target_dir {
         command.env("CARGO_TARGET_DIR", dir);
     }
     match artifacts {
-        Artifacts::Workspace => command
-            .args(separate_artifacts(root, options.target_dir.as_deref())),
+        Artifacts::Workspace => command.args(separate_artifacts(
+            root,
+            options.target_dir.as_deref(),
+            options.copy,
+        )),
         Artifacts::OwnPackage(original) => {
-            let own = format!("profile.dev.package.\"{package}\".");
-            let shared =
-                separate_artifacts(original, options.target_dir.as_deref());
+            let own = own_package(package, options.copy);
+            let prefix = format!("profile.dev.package.\"{package}\".");
+            let shared = separate_artifacts(
+                original,
+                options.target_dir.as_deref(),
+                options.copy,
+            );
             for pair in shared.chunks(2) {
-                if !pair.iter().any(|arg| arg.starts_with(&own)) {
+                if !pair.iter().any(|arg| arg.starts_with(&prefix)) {
                     command.args(pair);
                 }
             }
-            command.args([
-                "--config".to_string(),
-                format!("{own}codegen-units=255"),
-            ])
+            command.args(own)
         }
     };
     let spawn_error = |source| Error::Spawn {
         program: cargo.to_string(),
         source,
     };
+    // The student's code is compiled (constant evaluation, the compiler's
+    // own limits) under the same memory limit and sandbox as it runs, and
+    // the build is a process group that Ctrl-C ends (see `process_group`).
+    let mut command = options.contained(command);
+    command
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped());
+    memory_limit::set(&mut command, options.memory);
+    process_group::prepare(&mut command).map_err(spawn_error)?;
     let mut child = command.spawn().map_err(spawn_error)?;
+    let group = process_group::Group::new(&child);
 
     // Echo the build progress and the compiler's messages while collecting them.
     let stderr = child.stderr.take().expect("stderr is piped");
@@ -119,6 +132,7 @@ pub(crate) fn build(
     let read = pipe.read_to_string(&mut stdout);
     let stderr = echo.join().unwrap_or_default();
     let status = child.wait().map_err(spawn_error)?;
+    drop(group);
     read.map_err(spawn_error)?;
     if !status.success() {
         return Ok(Err(BuildFailure {

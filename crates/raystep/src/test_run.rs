@@ -18,8 +18,10 @@ use raystep_figure::Chapter;
 
 use crate::cargo_artifacts::Executable;
 use crate::held_out::held_out_name;
-use crate::limited_process::{Exit, Ran, describe_status, run_with_limit};
-use crate::run_options::Run;
+use crate::limited_process::{
+    Exit, Limits, Ran, out_of_memory, run_with_limit,
+};
+use crate::run_options::{Run, shown_size};
 use crate::test_build::{Built, cargo_program};
 
 /// How long `--list` may take after a binary timed out (to name its unfinished tests).
@@ -46,7 +48,7 @@ pub(crate) fn run_built(
             if !run.quiet {
                 eprintln!("     Running {}", executable.target);
             }
-            run_tests(executable, &cargo, run.timeout, threads, &context)
+            run_tests(executable, &cargo, run, threads, &context)
         })
         .collect();
     let mut report = report(&exercises, &binaries, &test_sources(&dir));
@@ -132,11 +134,13 @@ fn test_command(
     command
 }
 
-/// Runs one test binary with a time limit and reads what it printed.
+/// Runs one test binary within the limits of `run` (and in its sandbox,
+/// if any) and reads what it printed.
 fn run_tests(
-    executable: &Executable, cargo: &str, limit: Duration, threads: usize,
+    executable: &Executable, cargo: &str, run: &Run, threads: usize,
     context: &Context,
 ) -> TestBinary {
+    let limit = run.timeout;
     let threads_arg = threads.to_string();
     let args = [
         "--test-threads",
@@ -146,18 +150,58 @@ fn run_tests(
         "--format",
         "pretty",
     ];
-    let ran = run_with_limit(
-        &mut test_command(executable, cargo, &args, context),
-        limit,
-    );
+    let command = test_command(executable, cargo, &args, context);
+    let ran = run_with_limit(&mut run.contained(command), run.limits());
     let (stdout, ended) = match ran {
         Err(error) => (String::new(), Ended::NotStarted(error.to_string())),
         Ok(Ran {
             stdout,
             stderr,
             exit: Exit::Status(status),
+        }) if !status.success() && out_of_memory(&stderr).is_some() => {
+            let listed = list_tests(executable, cargo, run, context);
+            let why = format!(
+                "out of memory (limit {}, --memory)",
+                shown_size(run.memory)
+            );
+            let how = run.described(status);
+            (
+                stdout,
+                Ended::Stopped {
+                    why,
+                    how,
+                    listed,
+                    threads,
+                },
+            )
+        }
+        Ok(Ran {
+            stdout,
+            exit: Exit::OutputCut,
+            ..
         }) => {
-            let mut how = describe_status(status);
+            let listed = list_tests(executable, cargo, run, context);
+            let why = format!(
+                "printed more than {} (limit, --output)",
+                shown_size(run.output)
+            );
+            let how = "killed".to_string();
+            (
+                stdout,
+                Ended::Stopped {
+                    why,
+                    how,
+                    listed,
+                    threads,
+                },
+            )
+        }
+        Ok(Ran {
+            stdout,
+            stderr,
+            exit: Exit::Status(status),
+        }) => {
+            let mut how = run.described(status);
             if let Some(test) = overflowed(&stderr) {
                 how = format!(
                     "{test} overflowed its stack: a recursion that never \
@@ -169,7 +213,7 @@ fn run_tests(
                 let running = if output.finished {
                     Vec::new()
                 } else {
-                    let listed = list_tests(executable, cargo, limit, context);
+                    let listed = list_tests(executable, cargo, run, context);
                     still_running(&output, &listed, threads)
                 };
                 let what = match out_of_memory(&stderr) {
@@ -198,7 +242,7 @@ fn run_tests(
             exit: Exit::TimedOut,
             ..
         }) => {
-            let listed = list_tests(executable, cargo, limit, context);
+            let listed = list_tests(executable, cargo, run, context);
             (
                 stdout,
                 Ended::TimedOut {
@@ -215,15 +259,19 @@ fn run_tests(
 /// The tests of a binary, in the order libtest starts them (`--list`);
 /// empty if that cannot be told.
 fn list_tests(
-    executable: &Executable, cargo: &str, limit: Duration, context: &Context,
+    executable: &Executable, cargo: &str, run: &Run, context: &Context,
 ) -> Vec<String> {
-    let mut list = test_command(
+    let list = test_command(
         executable,
         cargo,
         &["--list", "--format", "terse"],
         context,
     );
-    match run_with_limit(&mut list, LIST_LIMIT.min(limit)) {
+    let limits = Limits {
+        time: LIST_LIMIT.min(run.timeout),
+        ..run.limits()
+    };
+    match run_with_limit(&mut run.contained(list), limits) {
         Ok(Ran {
             stdout,
             exit: Exit::Status(status),
@@ -231,25 +279,6 @@ fn list_tests(
         }) if status.success() => parse_list(&stdout),
         _ => Vec::new(),
     }
-}
-
-/// The runtime's note when an allocation failed (the process then
-/// aborts): `memory allocation of 6442450944 bytes failed`, as `6 GiB`.
-pub fn out_of_memory(stderr: &str) -> Option<String> {
-    stderr.lines().find_map(|line| {
-        let bytes: u64 = line
-            .trim()
-            .strip_prefix("memory allocation of ")?
-            .strip_suffix(" bytes failed")?
-            .parse()
-            .ok()?;
-        let gib = bytes as f64 / (1u64 << 30) as f64;
-        Some(if gib >= 0.1 {
-            format!("it asked for {gib:.1} GiB at once")
-        } else {
-            format!("it asked for {bytes} bytes at once")
-        })
-    })
 }
 
 /// The test whose thread overflowed its stack, from the runtime's note on
@@ -272,19 +301,5 @@ mod tests {
                       its stack\nfatal runtime error: stack overflow\n";
         assert_eq!(overflowed(stderr), Some("recursion::depth_one"));
         assert_eq!(overflowed("thread 'x' panicked at a.rs:1:1:\n"), None);
-    }
-
-    #[test]
-    fn out_of_memory_is_said_with_its_size() {
-        let stderr = "\nmemory allocation of 6442450944 bytes failed\n";
-        assert_eq!(
-            out_of_memory(stderr).as_deref(),
-            Some("it asked for 6.0 GiB at once")
-        );
-        assert_eq!(
-            out_of_memory("memory allocation of 4096 bytes failed").as_deref(),
-            Some("it asked for 4096 bytes at once")
-        );
-        assert_eq!(out_of_memory("thread 'x' panicked"), None);
     }
 }

@@ -14,8 +14,9 @@ use crate::error::Error;
 const SKIPPED_NAMES: &[&str] = &["target", ".git", "test-output"];
 
 /// Folders never copied, relative to the workspace root: the book's HTML
-/// (`mdbook build`) and scratch output (both in `.gitignore`).
-const SKIPPED_PATHS: &[&str] = &["book/book", "out"];
+/// (`mdbook build`), scratch output and the student's progress
+/// (`.raystep/`, see `progress_file`), all in `.gitignore`.
+const SKIPPED_PATHS: &[&str] = &["book/book", "out", ".raystep"];
 
 /// Files never copied: insta's proposals for new snapshots.
 const SKIPPED_SUFFIXES: &[&str] = &[".snap.new", ".pending-snap"];

@@ -195,11 +195,12 @@ fn write(path: &Path, text: &str) {
     }
 }
 
-/// A throwaway workspace shaped like the real one: chapter 1 with the same
-/// package and exercise names, where the stub of `line_through_points`
-/// loops forever and the one of `plane_through_points` is right.
-fn looping_workspace() -> PathBuf {
-    let root = Path::new(env!("CARGO_TARGET_TMPDIR")).join("check-timeout");
+/// A throwaway workspace shaped like the real one, in `<tmp>/<name>`:
+/// chapter 1 with the same package and exercise names, whose stubs are
+/// `line` (of `slope`) and `plane` (of `normal_z`); the reference bodies
+/// are right.
+fn throwaway_workspace(name: &str, line: &str, plane: &str) -> PathBuf {
+    let root = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
     let chapter = root.join("chapters/ch01-implicit-lines-planes");
     write(
         &root.join("Cargo.toml"),
@@ -235,20 +236,9 @@ fn looping_workspace() -> PathBuf {
                  \x20   (p1.1 - p0.1) / (p1.0 - p0.0)\n\
                  }\n";
     write(&chapter.join("src/line_through_points.rs"), slope);
-    write(
-        &chapter.join("exercise/line_through_points.rs"),
-        "pub fn slope(p0: (f64, f64), p1: (f64, f64)) -> f64 {\n\
-         \x20   let _ = (p0, p1);\n\
-         \x20   loop {\n\
-         \x20       std::thread::sleep(std::time::Duration::from_millis(10));\n\
-         \x20   }\n\
-         }\n",
-    );
-    let normal = "pub fn normal_z(a: (f64, f64), b: (f64, f64)) -> f64 {\n\
-                  \x20   a.0 * b.1 - a.1 * b.0\n\
-                  }\n";
-    write(&chapter.join("src/plane_through_points.rs"), normal);
-    write(&chapter.join("exercise/plane_through_points.rs"), normal);
+    write(&chapter.join("exercise/line_through_points.rs"), line);
+    write(&chapter.join("src/plane_through_points.rs"), NORMAL);
+    write(&chapter.join("exercise/plane_through_points.rs"), plane);
     write(
         &chapter.join("tests/line_through_points.rs"),
         "#[test]\n\
@@ -264,6 +254,121 @@ fn looping_workspace() -> PathBuf {
          }\n",
     );
     root
+}
+
+/// The right `normal_z` of the throwaway chapter.
+const NORMAL: &str = "pub fn normal_z(a: (f64, f64), b: (f64, f64)) -> f64 {\n\
+                      \x20   a.0 * b.1 - a.1 * b.0\n\
+                      }\n";
+
+/// The throwaway chapter where the stub of `line_through_points` loops
+/// forever and the one of `plane_through_points` is right.
+fn looping_workspace() -> PathBuf {
+    throwaway_workspace(
+        "check-timeout",
+        "pub fn slope(p0: (f64, f64), p1: (f64, f64)) -> f64 {\n\
+         \x20   let _ = (p0, p1);\n\
+         \x20   loop {\n\
+         \x20       std::thread::sleep(std::time::Duration::from_millis(10));\n\
+         \x20   }\n\
+         }\n",
+        NORMAL,
+    )
+}
+
+/// Runs `raystep check ch01` in the throwaway workspace `root` with
+/// `args`: (success, report, stderr).
+fn check_throwaway(root: &Path, args: &[&str]) -> (bool, String, String) {
+    let target = root.join("target");
+    let mut all = vec!["ch01", "--target-dir", target.to_str().unwrap()];
+    all.extend(args);
+    raystep(&all, root, |_| {})
+}
+
+/// A test that asks for memory without end (a walk that never ends while
+/// it records every visit) is stopped at `--memory`, and one that prints
+/// without end at `--output`; each fails its exercise, naming the limit
+/// and the test, and the machine is none the worse.
+#[test]
+fn memory_and_output_floods_are_stopped_at_their_limits() {
+    let root = throwaway_workspace(
+        "check-limits",
+        "pub fn slope(p0: (f64, f64), p1: (f64, f64)) -> f64 {\n\
+         \x20   let mut visits = Vec::new();\n\
+         \x20   loop {\n\
+         \x20       visits.push((p0, p1));\n\
+         \x20   }\n\
+         }\n",
+        "pub fn normal_z(a: (f64, f64), b: (f64, f64)) -> f64 {\n\
+         \x20   use std::io::Write as _;\n\
+         \x20   let mut out = std::io::stdout();\n\
+         \x20   loop {\n\
+         \x20       let _ = writeln!(out, \"{a:?} {b:?}: a flood of output\");\n\
+         \x20   }\n\
+         }\n",
+    );
+    // The defaults: 2 GiB and 8 MiB.
+    let (ok, report, stderr) = check_throwaway(&root, &[]);
+    assert_eq!(
+        verdict(&report, &stderr, "line_through_points"),
+        "failed: out of memory (limit 2 GiB, --memory) while running \
+         slope_of_a_diagonal",
+        "{report}{stderr}"
+    );
+    assert_eq!(
+        verdict(&report, &stderr, "plane_through_points"),
+        "failed: printed more than 8 MiB (limit, --output) while running \
+         normal_of_the_xy_plane",
+        "{report}{stderr}"
+    );
+    assert!(!ok, "{report}{stderr}");
+    // Limits of one's own.
+    let (_, report, stderr) =
+        check_throwaway(&root, &["--memory", "512MiB", "--output", "64KiB"]);
+    assert!(
+        verdict(&report, &stderr, "line_through_points")
+            .starts_with("failed: out of memory (limit 512 MiB, --memory)"),
+        "{report}{stderr}"
+    );
+    assert!(
+        verdict(&report, &stderr, "plane_through_points")
+            .starts_with("failed: printed more than 64 KiB (limit, --output)"),
+        "{report}{stderr}"
+    );
+}
+
+/// A test whose code starts a process and returns leaves nothing running:
+/// the process dies with its test binary's process group (and the file,
+/// which reaches the operating system, is refused).
+#[cfg(target_os = "linux")]
+#[test]
+fn nothing_a_test_started_outlives_the_check() {
+    // A sleep no other process runs: 4000.25 s.
+    let marker = "4000.25";
+    let root = throwaway_workspace(
+        "check-forks",
+        &format!(
+            "pub fn slope(p0: (f64, f64), p1: (f64, f64)) -> f64 {{\n\
+             \x20   let _ = std::process::Command::new(\"sleep\").arg(\"{marker}\").spawn();\n\
+             \x20   (p1.1 - p0.1) / (p1.0 - p0.0)\n\
+             }}\n"
+        ),
+        NORMAL,
+    );
+    let (_, report, stderr) = check_throwaway(&root, &[]);
+    assert!(
+        verdict(&report, &stderr, "line_through_points")
+            .starts_with("refused: exercise/line_through_points.rs:2:"),
+        "{report}{stderr}"
+    );
+    let sleeping: Vec<String> = fs::read_dir("/proc")
+        .unwrap()
+        .flatten()
+        .filter_map(|entry| fs::read(entry.path().join("cmdline")).ok())
+        .map(|cmdline| String::from_utf8_lossy(&cmdline).replace('\0', " "))
+        .filter(|cmdline| cmdline.contains(marker))
+        .collect();
+    assert!(sleeping.is_empty(), "still running: {sleeping:?}");
 }
 
 /// An endless loop in a stub is stopped at `--timeout` and named; the other

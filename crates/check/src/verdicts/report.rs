@@ -249,6 +249,11 @@ pub fn report(
                 .other_failed
                 .push(format!("{}: {timed_out}", binary.target));
         }
+        if let Some(stopped) = &binary.stopped {
+            report
+                .other_failed
+                .push(format!("{}: {stopped}", binary.target));
+        }
     }
     report
 }
@@ -275,6 +280,10 @@ fn verdict(
     if let Some(timed_out) = binaries.iter().find_map(|b| b.timed_out.as_ref())
     {
         return Verdict::TimedOut(timed_out.clone());
+    }
+    // Stopped at the memory or output limit: the same.
+    if let Some(stopped) = binaries.iter().find_map(|b| b.stopped.as_ref()) {
+        return Verdict::Failed(stopped.clone());
     }
     let mut failed: Vec<(&str, Option<&Failure>)> = binaries
         .iter()

@@ -6,7 +6,7 @@ use std::collections::HashSet;
 use std::fmt;
 use std::time::Duration;
 
-use super::libtest_output::{Output, TestResult, parse_output_in};
+use super::libtest_output::{Outcome, Output, TestResult, parse_output_in};
 use super::run_context::Context;
 
 /// Which target a test binary was built from.
@@ -42,6 +42,19 @@ pub enum Ended {
     },
     /// It could not be started: why.
     NotStarted(String),
+    /// It was stopped at a limit other than time: out of memory, or
+    /// killed for printing too much.
+    Stopped {
+        /// Which limit, as the verdict says it: `out of memory (limit
+        /// 2 GiB, --memory)`.
+        why: String,
+        /// How it ended, as cargo says it (`signal: 6, SIGABRT: …`).
+        how: String,
+        /// Its tests in the order libtest starts them (`--list`); empty if unknown.
+        listed: Vec<String>,
+        /// How many tests it ran at once (`--test-threads`).
+        threads: usize,
+    },
     /// It was still running at `limit` and was killed.
     TimedOut {
         /// The time limit.
@@ -85,6 +98,10 @@ pub struct TestBinary {
     pub crashed: Option<String>,
     /// `Some` if it was killed at the time limit.
     pub timed_out: Option<TimedOut>,
+    /// `Some` if it was stopped at another limit: which, and the tests it
+    /// was running (`out of memory (limit 2 GiB, --memory) while running
+    /// walk_records_every_cell`).
+    pub stopped: Option<String>,
 }
 
 /// One binary's results from what it printed and how it ended, reading
@@ -93,7 +110,24 @@ pub fn test_binary_in(
     target: Target, stdout: &str, ended: &Ended, context: &Context,
 ) -> TestBinary {
     let output = parse_output_in(stdout, context);
+    let stopped = match ended {
+        Ended::Stopped {
+            why,
+            listed,
+            threads,
+            ..
+        } => {
+            let running = still_running(&output, listed, *threads);
+            Some(if running.is_empty() {
+                why.clone()
+            } else {
+                format!("{why} while running {}", running.join(", "))
+            })
+        }
+        _ => None,
+    };
     let (crashed, timed_out) = match ended {
+        Ended::Stopped { .. } => (None, None),
         Ended::TimedOut {
             limit,
             listed,
@@ -105,12 +139,19 @@ pub fn test_binary_in(
                 still_running: still_running(&output, listed, *threads),
             }),
         ),
-        // Killed by a signal after its `test result:` line: libtest itself
-        // never does that, so the line may not be libtest's.
+        // Killed by a signal after its `test result:` line, or failing
+        // with no test failed: libtest itself never does that, so the line
+        // may not be libtest's.
         Ended::Exited {
             success: false,
             how,
-        } if output.finished && how.contains("signal: ") => {
+        } if output.finished
+            && (how.contains("signal: ")
+                || !output
+                    .results
+                    .iter()
+                    .any(|r| matches!(r.outcome, Outcome::Failed(_)))) =>
+        {
             (Some(format!("the test binary crashed ({how})")), None)
         }
         _ if output.finished => (None, None),
@@ -130,6 +171,7 @@ pub fn test_binary_in(
         results: output.results,
         crashed,
         timed_out,
+        stopped,
     }
 }
 

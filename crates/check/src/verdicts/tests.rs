@@ -24,6 +24,7 @@ fn a_failure_cut_short_by_a_crash_says_so() {
         }],
         crashed: Some("the test binary crashed (signal: 6)".into()),
         timed_out: None,
+        stopped: None,
     };
     let report = report(&exercises(&["recursion"]), &[binary], &HashMap::new());
     assert_eq!(
@@ -66,18 +67,27 @@ fn split(stdout: &str) -> Vec<String> {
     outputs
 }
 
-/// Binaries that exited with libtest's failure status.
+/// Binaries that exited as libtest does: with its failure status if a
+/// test failed, else with success.
 fn exited(targets: Vec<Target>, stdout: &str) -> Vec<TestBinary> {
     let outputs = split(stdout);
     assert_eq!(outputs.len(), targets.len());
-    let ended = Ended::Exited {
-        success: false,
-        how: "exit status: 101".to_string(),
+    let ended = |output: &str| {
+        let failed = output.contains("test result: FAILED");
+        Ended::Exited {
+            success: !failed,
+            how: if failed {
+                "exit status: 101"
+            } else {
+                "exit status: 0"
+            }
+            .to_string(),
+        }
     };
     targets
         .into_iter()
         .zip(outputs)
-        .map(|(target, output)| test_binary(target, &output, &ended))
+        .map(|(target, output)| test_binary(target, &output, &ended(&output)))
         .collect()
 }
 
@@ -285,6 +295,26 @@ fn a_result_line_before_a_crash_is_not_believed() {
     );
     let report = report(&exercises(&["a"]), &[binary], &HashMap::new());
     assert_eq!(report.exercises[0].1.kind(), "failed");
+    // Nor is one that says every test passed and then exits with failure
+    // (a sandbox reports a death by signal as exit status 128 + N).
+    let exit = Ended::Exited {
+        success: false,
+        how: "exit status: 134".to_string(),
+    };
+    let binary = test_binary(Target::Test("a".into()), forged, &exit);
+    assert_eq!(
+        binary.crashed.as_deref(),
+        Some("the test binary crashed (exit status: 134)")
+    );
+    // libtest's own failure is believed: a test failed, exit status 101.
+    let failed = "\nrunning 1 tests\ntest a ... FAILED\n\n\
+        test result: FAILED. 0 passed; 1 failed; 0 ignored; 0 measured; 0 filtered out; finished in 0.00s\n";
+    let exit = Ended::Exited {
+        success: false,
+        how: "exit status: 101".to_string(),
+    };
+    let binary = test_binary(Target::Test("a".into()), failed, &exit);
+    assert_eq!(binary.crashed, None);
 }
 
 #[test]
@@ -330,8 +360,12 @@ fn ignored_tests_module_paths_and_other_binaries() {
         success: false,
         how: "exit status: 101".to_string(),
     };
+    let passed = Ended::Exited {
+        success: true,
+        how: "exit status: 0".to_string(),
+    };
     let binaries = [
-        test_binary(Target::Unit("src/lib.rs".into()), lib, &failed),
+        test_binary(Target::Unit("src/lib.rs".into()), lib, &passed),
         test_binary(Target::Unit("src/bin/figures.rs".into()), bin, &failed),
     ];
     let report = report(&[], &binaries, &HashMap::new());
@@ -481,6 +515,52 @@ fn a_timed_out_exercise_names_its_unfinished_tests() {
          0 of 1 exercises passed\n"
     );
     assert!(!report.all_passed());
+}
+
+/// A binary stopped at the memory or output limit fails its exercise with
+/// the limit and the test it was running, even though a test failed
+/// first: the limit is what the student must fix.
+#[test]
+fn an_exercise_stopped_at_a_limit_names_the_limit_and_the_test() {
+    let stopped = Ended::Stopped {
+        why: "out of memory (limit 2 GiB, --memory)".into(),
+        how: "signal: 6, SIGABRT: process abort signal".into(),
+        listed: listed(),
+        threads: 1,
+    };
+    let binary =
+        test_binary(Target::Test("recursion".into()), KILLED, &stopped);
+    assert_eq!((&binary.crashed, &binary.timed_out), (&None, &None));
+    let hog = report(&exercises(&["recursion"]), &[binary], &HashMap::new());
+    assert_eq!(
+        hog.exercises[0].1,
+        Verdict::Failed(
+            "out of memory (limit 2 GiB, --memory) while running \
+             facing_mirrors_terminate"
+                .into()
+        )
+    );
+    // Nothing known to be running: the limit alone.
+    let flood = Ended::Stopped {
+        why: "printed more than 8 MiB (limit, --output)".into(),
+        how: "killed".into(),
+        listed: Vec::new(),
+        threads: 1,
+    };
+    let binary = test_binary(Target::Unit("src/lib.rs".into()), "", &flood);
+    assert_eq!(
+        binary.stopped.as_deref(),
+        Some("printed more than 8 MiB (limit, --output)")
+    );
+    let report = report(&exercises(&["recursion"]), &[binary], &HashMap::new());
+    assert!(
+        report.other_failed.contains(
+            &"unittests src/lib.rs: printed more than 8 MiB (limit, --output)"
+                .to_string()
+        ),
+        "{:?}",
+        report.other_failed
+    );
 }
 
 #[test]
