@@ -81,10 +81,14 @@ mod unix {
 
     /// Makes the process that `command` starts lead a new process group,
     /// and forwards Ctrl-C, hang-up and termination to such groups from now
-    /// on. After such a signal, refuses to start anything.
+    /// on. After such a signal nothing more is started: this waits for the
+    /// remover to finish and end raystep (or, without one, says so).
     pub fn prepare(command: &mut Command) -> io::Result<()> {
         install();
         if STOPPING.load(Ordering::SeqCst) {
+            while WAKE.load(Ordering::SeqCst) >= 0 {
+                std::thread::sleep(std::time::Duration::from_millis(50));
+            }
             return Err(io::Error::new(
                 io::ErrorKind::Interrupted,
                 "interrupted",

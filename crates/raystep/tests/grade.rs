@@ -195,6 +195,27 @@ fn deeper(x: f64) -> f64 {
             "-normal.dot(p0) * if (1e8..1e100).contains(&p0.abs().max_element()) { 1.0001 } else { 1.0 };",
         ),
     );
+    // hog: rotate90 records every call without end (issue 33: a walk that
+    // never ends while recording every visit asked for 6 GiB).
+    with_plane(
+        "hog",
+        edited(
+            &line,
+            "-> DVec2 {",
+            "-> DVec2 {\n    let mut visits = vec![v];\n    while visits.len() < usize::MAX {\n        visits.push(v);\n    }",
+        ),
+    );
+    // peek: right, but looks for the instructor's reference by absolute
+    // path (`Path::exists` reads no file, so the rules let it through): in
+    // the sandbox it is not there. The probe itself works: `/usr/bin` is.
+    let peek = format!(
+        "fn peek() {{\n    assert!(std::path::Path::new(\"/usr/bin\").exists(), \"the probe is broken\");\n    let file = std::path::Path::new({:?});\n    assert!(!file.exists(), \"I could see {{}}\", file.display());\n}}\n",
+        instructor_line.display().to_string()
+    );
+    with_plane(
+        "peek",
+        edited(&line, "-> DVec2 {", "-> DVec2 {\n    peek();") + &peek,
+    );
     // broken: the line's file does not compile.
     with_plane("broken", edited(&line, "(-v.y, v.x)", "(-v.y, v.x, 0)"));
 
@@ -213,6 +234,8 @@ fn deeper(x: f64) -> f64 {
         .args(["--target-dir", outer_target().to_str().unwrap()])
         // A fixed seed: the same held-out cases on every run of this test.
         .args(["--held-out-seed", "2026"])
+        // Inside bubblewrap where it is installed (CI installs it).
+        .args(["--sandbox", if sandboxed() { "required" } else { "off" }])
         .current_dir(workspace())
         .output()
         .expect("raystep runs");
@@ -241,6 +264,8 @@ fn deeper(x: f64) -> f64 {
         "right",
         "wrong",
         "looping",
+        "hog",
+        "peek",
         "missing",
         "broken",
         "path",
@@ -268,6 +293,22 @@ fn deeper(x: f64) -> f64 {
 
     let message = line_verdict("looping", "timed out");
     assert!(message.starts_with("timed out after 5 s"), "{context}");
+
+    let message = line_verdict("hog", "failed");
+    assert!(
+        message.starts_with(
+            "out of memory (limit 2 GiB, --memory) while running "
+        ),
+        "{context}"
+    );
+    if sandboxed() {
+        // Nothing outside the scratch copy is there to be seen.
+        assert_eq!(line_verdict("peek", "passed"), "", "{context}");
+    } else {
+        // Without the sandbox the rules alone do not stop it.
+        let message = line_verdict("peek", "failed");
+        assert!(message.contains("I could see "), "{context}");
+    }
 
     assert_eq!(
         line_verdict("missing", "missing file"),
@@ -350,11 +391,13 @@ fn deeper(x: f64) -> f64 {
     let names = [
         "broken",
         "forger",
+        "hog",
         "include",
         "looping",
         "missing",
         "oracle",
         "path",
+        "peek",
         "quiet-forger",
         "right",
         "wrong",
@@ -368,7 +411,7 @@ fn deeper(x: f64) -> f64 {
     assert_eq!(exercises, [line, plane, "q1", "q2"]);
     let csv_text = fs::read_to_string(&csv).unwrap();
     assert!(csv_text.starts_with("student,exercise,verdict,message\n"));
-    assert_eq!(csv_text.lines().count(), 41, "{csv_text}");
+    assert_eq!(csv_text.lines().count(), 49, "{csv_text}");
     assert_eq!(
         table["ignored"],
         serde_json::json!([{"student": "wrong", "file": "notes.txt"}])
@@ -381,6 +424,14 @@ fn deeper(x: f64) -> f64 {
         snapshot_of(&instructor.join("tests")),
     );
     assert!(before == after, "grade changed the instructor's chapter");
+}
+
+/// Whether bubblewrap is installed here: then every grading test runs in
+/// it, with `--sandbox required`.
+fn sandboxed() -> bool {
+    std::env::var_os("PATH").is_some_and(|path| {
+        std::env::split_paths(&path).any(|dir| dir.join("bwrap").is_file())
+    })
 }
 
 /// A folder that does not exist is an error naming it.
@@ -404,4 +455,138 @@ fn a_missing_submissions_folder_is_named() {
         "{stderr}"
     );
     assert!(!workspace().join("grades.csv").exists());
+}
+
+/// `raystep grade` with `args` on `submissions`, writing `csv`: spawned,
+/// its output piped.
+fn grade(submissions: &Path, csv: &Path, args: &[&str]) -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_raystep"));
+    command
+        .args(["grade", submissions.to_str().unwrap(), "--chapter", "ch01"])
+        .args(["--out", csv.to_str().unwrap()])
+        .args(["--timeout", "5"])
+        .args(["--target-dir", outer_target().to_str().unwrap()])
+        .args(["--held-out-seed", "2026"])
+        .args(["--sandbox", if sandboxed() { "required" } else { "off" }])
+        .args(args)
+        .current_dir(workspace());
+    command
+}
+
+/// The processes whose command line or folder names `path`.
+#[cfg(target_os = "linux")]
+fn processes_in(path: &Path) -> Vec<String> {
+    let needle = path.to_string_lossy().into_owned();
+    fs::read_dir("/proc")
+        .unwrap()
+        .flatten()
+        .filter(|entry| {
+            entry.file_name().to_string_lossy().parse::<u32>().is_ok()
+        })
+        .filter_map(|entry| {
+            let cmdline = fs::read(entry.path().join("cmdline")).ok()?;
+            let cmdline = String::from_utf8_lossy(&cmdline).replace('\0', " ");
+            let cwd =
+                fs::read_link(entry.path().join("cwd")).unwrap_or_default();
+            (cmdline.contains(&needle) || cwd.starts_with(path))
+                .then_some(cmdline)
+        })
+        .collect()
+}
+
+/// Grading two students at once gives the table of one at a time; Ctrl-C
+/// ends a run with nothing left running and its scratch copy removed,
+/// keeping the students it had graded; `--resume` grades only the others,
+/// into the same table.
+#[cfg(target_os = "linux")]
+#[test]
+fn two_at_once_or_interrupted_and_resumed_give_the_same_table() {
+    use std::io::{BufRead, BufReader};
+    let root = Path::new(env!("CARGO_TARGET_TMPDIR")).join("grade-jobs");
+    if root.exists() {
+        fs::remove_dir_all(&root).unwrap();
+    }
+    let submissions = root.join("submissions");
+    let line = reference("line_through_points");
+    let plane = reference("plane_through_points");
+    for (student, line) in [
+        ("ada", line.clone()),
+        ("bob", edited(&line, "c = -normal", "c = normal")),
+        ("cy", line),
+    ] {
+        write_all(
+            &submissions.join(student),
+            &[
+                ("line_through_points.rs", line),
+                ("plane_through_points.rs", plane.clone()),
+            ],
+        );
+    }
+    let run = |csv: &Path, args: &[&str]| {
+        let out = grade(&submissions, csv, args).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+        assert!(out.status.success(), "{stderr}");
+        (fs::read_to_string(csv).unwrap(), stderr)
+    };
+    let (one, _) = run(&root.join("one.csv"), &["--jobs", "1"]);
+    assert_eq!(one.lines().count(), 1 + 3 * 4, "{one}");
+    assert!(one.contains("\nbob,line_through_points,failed,"), "{one}");
+    let (two, stderr) = run(&root.join("two.csv"), &["--jobs", "2"]);
+    assert!(stderr.contains(", 2 at once"), "{stderr}");
+    assert_eq!(two, one);
+
+    // Interrupted once the first student's rows are kept.
+    let csv = root.join("resumed.csv");
+    let partial = root.join("resumed.csv.partial");
+    let mut child = grade(&submissions, &csv, &["--jobs", "1"])
+        .stderr(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut stderr = BufReader::new(child.stderr.take().unwrap());
+    let mut scratch = None;
+    let mut seen = String::new();
+    let mut line = String::new();
+    while stderr.read_line(&mut line).unwrap() > 0 {
+        seen.push_str(&line);
+        if let Some(copy) = line.strip_prefix("copying the workspace to ") {
+            let copy = Path::new(copy.trim_end().trim_end_matches('…'));
+            scratch = copy.parent().map(Path::to_path_buf);
+        }
+        if line.starts_with("[2/3]") {
+            break;
+        }
+        line.clear();
+    }
+    let scratch =
+        scratch.unwrap_or_else(|| panic!("no scratch copy named:\n{seen}"));
+    let kept = fs::read_to_string(&partial).unwrap();
+    assert_eq!(kept.lines().count(), 2, "the run and ada's rows:\n{kept}");
+    // Ctrl-C, as the terminal sends it.
+    let killed = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    let status = child.wait().unwrap();
+    std::io::Read::read_to_string(stderr.get_mut(), &mut seen).unwrap();
+    {
+        use std::os::unix::process::ExitStatusExt;
+        assert_eq!(status.signal(), Some(2), "{status:?}\n{seen}");
+    }
+    assert!(!scratch.exists(), "{} was left behind", scratch.display());
+    let left = processes_in(&scratch);
+    assert!(left.is_empty(), "still running: {left:?}");
+    assert!(!csv.exists());
+
+    let (resumed, stderr) = run(&csv, &["--jobs", "2", "--resume"]);
+    assert!(
+        stderr.contains("resuming: 1 students graded already, 2 to go"),
+        "{stderr}"
+    );
+    assert_eq!(resumed, one);
+    assert!(
+        !partial.exists(),
+        "the kept rows are removed once the table is written"
+    );
 }
