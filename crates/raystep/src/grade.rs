@@ -192,6 +192,10 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         .target_dir
         .clone()
         .unwrap_or_else(|| scratch.path().join("target"));
+    // Copies of the workspace in one target folder share their crates'
+    // artifacts (see `separate_artifacts`): two runs grading into one
+    // folder at once would run each other's builds. They take turns.
+    let _turn = grading_turn(&target)?;
     // The student's build and tests see the scratch folder (the copies,
     // the target folder, the answers) and the test data, nothing else of
     // the instructor's.
@@ -326,6 +330,25 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
     println!("wrote {}", written.join(" and "));
     partial.finish()?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// The one turn to grade into the target folder `target`, held until
+/// dropped: a lock on `target/.raystep-grade.lock`, waited for (and said)
+/// when another run holds it.
+fn grading_turn(target: &Path) -> Result<fs::File, Error> {
+    fs::create_dir_all(target).map_err(|e| Error::io(target, e))?;
+    let path = target.join(".raystep-grade.lock");
+    let file = fs::File::create(&path).map_err(|e| Error::io(&path, e))?;
+    match file.try_lock() {
+        Ok(()) => return Ok(file),
+        Err(fs::TryLockError::WouldBlock) => eprintln!(
+            "waiting for another `raystep grade` building in {}…",
+            shown(target)
+        ),
+        Err(fs::TryLockError::Error(e)) => return Err(Error::io(&path, e)),
+    }
+    file.lock().map_err(|e| Error::io(&path, e))?;
+    Ok(file)
 }
 
 /// Grades one student (`name`, handing in `folder`) in the scratch

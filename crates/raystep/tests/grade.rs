@@ -216,6 +216,15 @@ fn deeper(x: f64) -> f64 {
         "peek",
         edited(&line, "-> DVec2 {", "-> DVec2 {\n    peek();") + &peek,
     );
+    // flood: rotate90 prints without end, past libtest's capture.
+    with_plane(
+        "flood",
+        edited(
+            &line,
+            "-> DVec2 {",
+            "-> DVec2 {\n    use std::io::Write as _;\n    while writeln!(std::io::stdout(), \"{v}\").is_ok() {}",
+        ),
+    );
     // broken: the line's file does not compile.
     with_plane("broken", edited(&line, "(-v.y, v.x)", "(-v.y, v.x, 0)"));
 
@@ -265,6 +274,7 @@ fn deeper(x: f64) -> f64 {
         "wrong",
         "looping",
         "hog",
+        "flood",
         "peek",
         "missing",
         "broken",
@@ -298,6 +308,13 @@ fn deeper(x: f64) -> f64 {
     assert!(
         message.starts_with(
             "out of memory (limit 2 GiB, --memory) while running "
+        ),
+        "{context}"
+    );
+    let message = line_verdict("flood", "failed");
+    assert!(
+        message.starts_with(
+            "printed more than 8 MiB (limit, --output) while running "
         ),
         "{context}"
     );
@@ -390,6 +407,7 @@ fn deeper(x: f64) -> f64 {
         .collect();
     let names = [
         "broken",
+        "flood",
         "forger",
         "hog",
         "include",
@@ -411,12 +429,22 @@ fn deeper(x: f64) -> f64 {
     assert_eq!(exercises, [line, plane, "q1", "q2"]);
     let csv_text = fs::read_to_string(&csv).unwrap();
     assert!(csv_text.starts_with("student,exercise,verdict,message\n"));
-    assert_eq!(csv_text.lines().count(), 49, "{csv_text}");
+    assert_eq!(csv_text.lines().count(), 53, "{csv_text}");
     assert_eq!(
         table["ignored"],
         serde_json::json!([{"student": "wrong", "file": "notes.txt"}])
     );
     assert!(stdout.contains("ignored: wrong/notes.txt"), "{stdout}");
+
+    // Nothing a student wrote is still running, and the scratch copy is gone.
+    let scratch = stderr
+        .lines()
+        .find_map(|l| l.strip_prefix("copying the workspace to "))
+        .and_then(|copy| Path::new(copy.trim_end_matches('…')).parent())
+        .expect("the scratch copy is named");
+    assert!(!scratch.exists(), "{}", scratch.display());
+    #[cfg(target_os = "linux")]
+    assert_eq!(processes_in(scratch), Vec::<String>::new());
 
     // The instructor's exercise stubs and snapshots are untouched.
     let after = (
