@@ -243,6 +243,8 @@ fn deeper(x: f64) -> f64 {
         .args(["--target-dir", outer_target().to_str().unwrap()])
         // A fixed seed: the same held-out cases on every run of this test.
         .args(["--held-out-seed", "2026"])
+        // Two at a time: one builds while the other's tests run.
+        .args(["--jobs", "2"])
         // Inside bubblewrap where it is installed (CI installs it).
         .args(["--sandbox", if sandboxed() { "required" } else { "off" }])
         .current_dir(workspace())
