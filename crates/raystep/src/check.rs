@@ -96,6 +96,7 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         // The student's own code on the student's own machine.
         sandbox: None,
         copy: 0,
+        keep_examples: None,
     };
     let report = check_chapter(&root, chapter, &run)?;
     println!("{} ({mode})", chapter.package);

@@ -169,8 +169,21 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         stubs.write(copy, chapter, true)?;
     }
     let shared = link_shared(&root, scratch.path());
+    let seed = options
+        .seed
+        .or(left.as_ref().and_then(|left| left.held_out_seed))
+        .unwrap_or_else(held_out::new_seed);
+    let target = options
+        .target_dir
+        .clone()
+        .unwrap_or_else(|| scratch.path().join("target"));
+    // Copies of the workspace in one target folder share their crates'
+    // artifacts (see `separate_artifacts`): two runs grading into one
+    // folder at once would run each other's builds. They take turns.
+    let _turn = grading_turn(&target)?;
     // The held-out cases' judge: the reference, built in the instructor's
-    // workspace; one secret seed for this run.
+    // workspace (in our turn: another run's student could otherwise put
+    // its program where cargo puts the reference's).
     let reference = held_out::build_reference(
         &root,
         chapter,
@@ -184,18 +197,6 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
             held_out::held_out_name(chapter)
         );
     }
-    let seed = options
-        .seed
-        .or(left.as_ref().and_then(|left| left.held_out_seed))
-        .unwrap_or_else(held_out::new_seed);
-    let target = options
-        .target_dir
-        .clone()
-        .unwrap_or_else(|| scratch.path().join("target"));
-    // Copies of the workspace in one target folder share their crates'
-    // artifacts (see `separate_artifacts`): two runs grading into one
-    // folder at once would run each other's builds. They take turns.
-    let _turn = grading_turn(&target)?;
     // The student's build and tests see the scratch folder (the copies,
     // the target folder, the answers) and the test data, nothing else of
     // the instructor's.
@@ -212,6 +213,9 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
             output: options.output,
             sandbox: sandbox.clone(),
             copy: k as u32,
+            keep_examples: Some(
+                scratch.path().join(format!("examples-{}", k + 1)),
+            ),
         })
         .collect();
     let partial = Partial::start(

@@ -177,13 +177,17 @@ pub fn judge(
         .args(["judge", &seed.to_string()])
         .arg(answers)
         .env("RUST_BACKTRACE", "0");
+    // The reference prints one line per exercise: a flood means this is
+    // not the reference's program.
+    let limits = Limits {
+        output: Some(1 << 20),
+        ..Limits::time(JUDGE_LIMIT)
+    };
     let Ran { stdout, exit, .. } =
-        run_with_limit(&mut judge, Limits::time(JUDGE_LIMIT)).map_err(
-            |source| Error::Spawn {
-                program: reference.display().to_string(),
-                source,
-            },
-        )?;
+        run_with_limit(&mut judge, limits).map_err(|source| Error::Spawn {
+            program: reference.display().to_string(),
+            source,
+        })?;
     if !matches!(exit, Exit::Status(status) if status.success()) {
         return Err(Error::Usage(format!(
             "the reference's held-out program failed to judge ({}): {exit:?}",

@@ -33,6 +33,10 @@ pub struct Run {
     /// Which copy of the workspace this is, when several build into one
     /// target folder at once (`raystep grade --jobs`): 0 for the first.
     pub copy: u32,
+    /// Where the examples a build makes (the held-out program) are copied
+    /// as soon as it ends, for the run to use (`raystep grade`); else they
+    /// are used where cargo put them.
+    pub keep_examples: Option<PathBuf>,
 }
 
 impl Run {

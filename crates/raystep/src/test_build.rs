@@ -110,6 +110,9 @@ pub(crate) fn build(
         .stderr(Stdio::piped());
     memory_limit::set(&mut command, options.memory);
     process_group::prepare(&mut command).map_err(spawn_error)?;
+    // One build at a time in this process, its examples kept before the
+    // next build (see `keep_examples`).
+    let _turn = BUILDS.lock().unwrap_or_else(|e| e.into_inner());
     let mut child = command.spawn().map_err(spawn_error)?;
     let group = process_group::Group::new(&child);
 
@@ -149,8 +152,34 @@ pub(crate) fn build(
             errors: Vec::new(),
         }));
     }
+    let examples = match &options.keep_examples {
+        Some(dir) => keep_examples(examples(&stdout), dir)?,
+        None => examples(&stdout),
+    };
     Ok(Ok(Built {
         tests: executables,
-        examples: examples(&stdout),
+        examples,
     }))
+}
+
+/// The builds of this process take turns: `raystep grade --jobs` builds
+/// several copies of the workspace into one target folder, and cargo puts
+/// an example's program at one path whichever copy built it.
+static BUILDS: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+/// The `examples` copied into `dir`, before another build can put its own
+/// program at their path (`target/debug/examples/<name>`, the same for
+/// every copy of the workspace).
+fn keep_examples(
+    examples: Vec<(String, PathBuf)>, dir: &Path,
+) -> Result<Vec<(String, PathBuf)>, Error> {
+    std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+    examples
+        .into_iter()
+        .map(|(name, path)| {
+            let kept = dir.join(&name);
+            std::fs::copy(&path, &kept).map_err(|e| Error::io(&path, e))?;
+            Ok((name, kept))
+        })
+        .collect()
 }

@@ -555,7 +555,7 @@ fn two_at_once_or_interrupted_and_resumed_give_the_same_table() {
     let run = |csv: &Path, args: &[&str]| {
         let out = grade(&submissions, csv, args).output().unwrap();
         let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-        assert!(out.status.success(), "{stderr}");
+        assert!(out.status.success(), "{:?}\n{stderr}", out.status);
         (fs::read_to_string(csv).unwrap(), stderr)
     };
     let (one, _) = run(&root.join("one.csv"), &["--jobs", "1"]);
