@@ -205,6 +205,9 @@ pub struct Leaves {
     pub ids: Vec<u32>,
     /// Triangles with no finite box, tested by every ray first.
     pub outside: Outside,
+    /// Step 8: the leaves in blocks of four, which the leaves' links
+    /// then name (`(first block, blocks)`), if built.
+    pub blocks: Option<crate::leaf4::Blocks4>,
 }
 
 impl Leaves {
@@ -216,6 +219,7 @@ impl Leaves {
             triangles: LeafTriangles::new(ordered.collect(), single),
             ids: tree.order.clone(),
             outside: Outside::new(triangles, &tree.unbounded),
+            blocks: None,
         }
     }
 
@@ -234,11 +238,17 @@ impl Leaves {
         FastRay::new(ray, self.triangles.lecture())
     }
 
-    /// Bytes of the triangles, their indices and those outside.
+    /// Bytes of the triangles, their indices and those outside (of the
+    /// blocks instead, if built).
     pub fn bytes(&self) -> usize {
-        self.triangles.bytes()
-            + self.ids.len() * size_of::<u32>()
-            + self.outside.bytes()
+        match &self.blocks {
+            Some(blocks) => blocks.bytes() + self.outside.bytes(),
+            None => {
+                self.triangles.bytes()
+                    + self.ids.len() * size_of::<u32>()
+                    + self.outside.bytes()
+            }
+        }
     }
 
     /// A leaf of the walks: its `count` triangles from `first`, each
@@ -249,6 +259,9 @@ impl Leaves {
         &self, (first, count): (u32, u32), ray: &FastRay,
         interval: &mut Interval, any: bool, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
+        if let Some(blocks) = &self.blocks {
+            return blocks.leaf((first, count), ray, interval, any, counts);
+        }
         let mut closest = None;
         for j in first as usize..(first + count) as usize {
             counts.triangles += 1;

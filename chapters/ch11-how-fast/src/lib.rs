@@ -17,6 +17,9 @@
 //!   once (AVX2).
 //! - Step 7: threads, for tracing (the benchmark's `--threads`) and for
 //!   the build ([`parallel_build`]).
+//! - Step 8 ([`leaf4`]): leaves of four triangles, merged where the SAH
+//!   says a block of four beats the nodes above it, tested four at once
+//!   (AVX2).
 //!
 //! The appendix has no exercises: it is written for engineers, after the
 //! lecture.
@@ -24,6 +27,7 @@
 
 pub mod binary;
 pub mod compressed;
+pub mod leaf4;
 pub mod leaf_triangles;
 pub mod parallel_build;
 #[cfg(target_arch = "x86_64")]

@@ -7,6 +7,7 @@ use raystep_core::{DVec3, Interval};
 
 use crate::binary::Binary;
 use crate::compressed::CompressedNode;
+use crate::leaf4::merge_leaves;
 #[cfg(target_arch = "x86_64")]
 use crate::simd8;
 use crate::wide::{Wide, scalar_boxes};
@@ -102,12 +103,30 @@ pub enum Step {
     /// 7b: 6b, its tree built on the pool's threads.
     #[value(name = "bvh8-compressed-par")]
     Compressed8Parallel,
+    /// Step 8: `bvh8-avx-tri` with leaves of four, tested four at once.
+    ///
+    /// 8: 6a, its small subtrees merged into leaves of blocks of four
+    /// triangles where the SAH says so, each block tested four triangles
+    /// at once (AVX2, where the CPU has it).
+    #[value(name = "bvh8-leaf4")]
+    Wide8Leaf4,
+    /// `bvh8-compressed-tri` with leaves of four, tested four at once.
+    ///
+    /// 8b: 6b (compressed nodes), its leaves as step 8's.
+    #[value(name = "bvh8-compressed-leaf4")]
+    Compressed8Leaf4,
+    /// Step 9: `bvh8-leaf4`, any-hit rays taking children unsorted.
+    ///
+    /// 9: 8a, and a shadow ray (any hit) takes the children it hits in
+    /// the node's order instead of nearest first.
+    #[value(name = "bvh8-any-unsorted")]
+    Wide8AnyUnsorted,
 }
 
 impl Step {
     /// Every step, in order: the list [`clap::ValueEnum`] derives from
     /// the declaration above (a test holds the two equal).
-    pub const ALL: [Step; 15] = [
+    pub const ALL: [Step; 18] = [
         Step::Ordered,
         Step::LeafLayout,
         Step::SweepTree,
@@ -123,6 +142,9 @@ impl Step {
         Step::Compressed8Triangles,
         Step::Wide8Parallel,
         Step::Compressed8Parallel,
+        Step::Wide8Leaf4,
+        Step::Compressed8Leaf4,
+        Step::Wide8AnyUnsorted,
     ];
 
     /// The name tables and the command line use: its `#[value(name)]`.
@@ -193,7 +215,7 @@ impl FastBvh {
     }
 
     /// `step`'s structure from a tree already built (and, for step 4b,
-    /// already rotated).
+    /// already rotated; steps 8 and 9 merge its leaves themselves).
     pub fn from_tree(
         triangles: &[[DVec3; 3]], tree: &Bvh, step: Step,
     ) -> FastBvh {
@@ -233,6 +255,26 @@ impl FastBvh {
                 let wide: Wide<8> = Wide::new(triangles, tree, single);
                 Built::Wide8(wide.with_lanes(), kernel)
             }
+            Step::Wide8Leaf4 | Step::Wide8AnyUnsorted => {
+                let kernel = if avx2() {
+                    Kernel::Avx2
+                } else if avx() {
+                    Kernel::Avx
+                } else {
+                    Kernel::Scalar
+                };
+                let wide = leaves_of_four(triangles, &merge_leaves(tree));
+                let wide = match step {
+                    Step::Wide8AnyUnsorted => wide.unordered_any(),
+                    _ => wide,
+                };
+                Built::Wide8(wide, kernel)
+            }
+            Step::Compressed8Leaf4 => {
+                let kernel = if avx2() { Kernel::Avx2 } else { Kernel::Scalar };
+                let wide = leaves_of_four(triangles, &merge_leaves(tree));
+                Built::Compressed8(wide.map_nodes(CompressedNode::new), kernel)
+            }
             Step::Compressed8
             | Step::Compressed8Sweep
             | Step::Compressed8Triangles
@@ -256,10 +298,14 @@ impl FastBvh {
     pub fn scalar(mut self) -> FastBvh {
         match &mut self.built {
             Built::Binary(_) => {}
-            Built::Wide4(_, k)
-            | Built::Wide8(_, k)
-            | Built::Compressed8(_, k) => {
+            Built::Wide4(_, k) => *k = Kernel::Scalar,
+            Built::Wide8(w, k) => {
                 *k = Kernel::Scalar;
+                w.lane_by_lane();
+            }
+            Built::Compressed8(w, k) => {
+                *k = Kernel::Scalar;
+                w.lane_by_lane();
             }
         }
         self
@@ -369,6 +415,16 @@ impl MeshAccelerator for FastBvh {
         &self, ray: &Ray32, interval: Interval, counts: &mut TraceCounts,
     ) -> bool {
         self.trace::<true>(ray, interval, counts).is_some()
+    }
+}
+
+/// Step 8's structure: the 8-wide tree of `tree` with its leaves in
+/// blocks of four (step 6's leaves if a coordinate is not an `f32`).
+fn leaves_of_four(triangles: &[[DVec3; 3]], tree: &Bvh) -> Wide<8> {
+    let wide: Wide<8> = Wide::new(triangles, tree, true);
+    match crate::leaf4::Blocks4::new(triangles, tree) {
+        Some((blocks, links)) => wide.with_blocks(blocks, &links),
+        None => wide.with_lanes(),
     }
 }
 

@@ -61,6 +61,9 @@ pub struct Wide<const W: usize, N = WideNode<W>> {
     /// The root as a child: a node, or a leaf if the tree is one leaf.
     root: Option<Entry>,
     leaves: Leaves,
+    /// Step 9: an any-hit walk takes the children hit in the node's
+    /// order, without sorting them by distance.
+    unordered_any: bool,
 }
 
 impl<const W: usize> Wide<W> {
@@ -87,6 +90,7 @@ impl<const W: usize> Wide<W> {
             nodes,
             root,
             leaves: Leaves::new(triangles, tree, single),
+            unordered_any: false,
         }
     }
     // ANCHOR_END: collapse
@@ -98,12 +102,43 @@ impl<const W: usize> Wide<W> {
         self
     }
 
+    /// Step 8: the same tree, its leaves in blocks of four (`blocks`),
+    /// each leaf's link `(first, count)` turned into `links[first]`
+    /// (`(first block, blocks)`).
+    pub fn with_blocks(
+        mut self, blocks: crate::leaf4::Blocks4, links: &[(u32, u32)],
+    ) -> Self {
+        let relink = |(child, count): (u32, u32)| match count {
+            0 => (child, 0),
+            _ => links[child as usize],
+        };
+        for node in &mut self.nodes {
+            for i in 0..W {
+                (node.child[i], node.count[i]) =
+                    relink((node.child[i], node.count[i]));
+            }
+        }
+        if let Some(root) = &mut self.root {
+            (root.child, root.count) = relink((root.child, root.count));
+        }
+        self.leaves.blocks = Some(blocks);
+        self
+    }
+
+    /// Step 9: the same tree, its any-hit walk taking the children hit in
+    /// the node's order (a shadow ray wants any blocker, not the nearest).
+    pub fn unordered_any(mut self) -> Self {
+        self.unordered_any = true;
+        self
+    }
+
     /// The same tree with each node turned into `f(node)`.
     pub fn map_nodes<N>(self, f: impl Fn(&WideNode<W>) -> N) -> Wide<W, N> {
         Wide {
             nodes: self.nodes.iter().map(f).collect(),
             root: self.root,
             leaves: self.leaves,
+            unordered_any: self.unordered_any,
         }
     }
 }
@@ -112,6 +147,14 @@ impl<const W: usize, N: Links> Wide<W, N> {
     /// How many wide nodes.
     pub fn node_count(&self) -> usize {
         self.nodes.len()
+    }
+
+    /// Step 8's blocks, if any, tested lane by lane (the fallback a CPU
+    /// without AVX2 gets): for testing the fallback anywhere.
+    pub fn lane_by_lane(&mut self) {
+        if let Some(blocks) = self.leaves.blocks.take() {
+            self.leaves.blocks = Some(blocks.lane_by_lane());
+        }
     }
 
     /// Bytes of nodes, triangles and indices.
@@ -130,6 +173,22 @@ impl<const W: usize, N: Links> Wide<W, N> {
         counts: &mut TraceCounts,
         boxes: impl Fn(&N, &FastRay, (f32, f32)) -> ([f32; W], u32),
     ) -> Option<MeshHit> {
+        // Step 9's any-hit walk is compiled apart, without the sort.
+        if any && self.unordered_any {
+            self.walk_with::<true>(ray, interval, any, counts, boxes)
+        } else {
+            self.walk_with::<false>(ray, interval, any, counts, boxes)
+        }
+    }
+
+    /// [`Wide::walk`], the children hit sorted nearest first unless
+    /// `UNSORTED`.
+    #[inline(always)]
+    fn walk_with<const UNSORTED: bool>(
+        &self, ray: &FastRay, interval: Interval, any: bool,
+        counts: &mut TraceCounts,
+        boxes: impl Fn(&N, &FastRay, (f32, f32)) -> ([f32; W], u32),
+    ) -> Option<MeshHit> {
         // Step 1: triangles outside the tree (none in a finite mesh).
         let mut interval = interval;
         let outside = &self.leaves.outside;
@@ -142,7 +201,8 @@ impl<const W: usize, N: Links> Wide<W, N> {
         // ray), more on the heap.
         let mut stack: SmallVec<[Entry; 64]> = SmallVec::new();
         let mut span = span(interval);
-        // The nearest child hit goes straight on, the others wait.
+        // The nearest child hit goes straight on, the others wait (step
+        // 9: for any hit, the last in the node's order).
         let mut next = Some(self.root?);
         loop {
             let entry = match next.take() {
@@ -189,7 +249,7 @@ impl<const W: usize, N: Links> Wide<W, N> {
                 };
                 // insertion sort, farthest first
                 let mut j = n;
-                while j > 0 && hit[j - 1].t < e.t {
+                while !UNSORTED && j > 0 && hit[j - 1].t < e.t {
                     hit[j] = hit[j - 1];
                     j -= 1;
                 }
@@ -201,10 +261,12 @@ impl<const W: usize, N: Links> Wide<W, N> {
             };
             for e in others {
                 // Step 5: a waiting node's memory asked for now, used
-                // later.
+                // later (step 8: a waiting leaf's blocks too).
                 #[cfg(target_arch = "x86_64")]
                 if e.count == 0 {
                     crate::prefetch::prefetch(&self.nodes[e.child as usize]);
+                } else if let Some(blocks) = &self.leaves.blocks {
+                    blocks.prefetch((e.child, e.count));
                 }
                 stack.push(*e);
             }

@@ -235,6 +235,8 @@ fn the_inlined_test_is_chapter_8s_bit_for_bit() {
         );
         // step 6's test, three edges at once (where the CPU has AVX2)
         simd_cases += usize::from(three_edges_at_once(&v, &fast, theirs, k));
+        // step 8's, four triangles at once
+        four_at_once(&v, &fast, theirs, k);
         hits += usize::from(ours.is_some());
         cases += 1;
     }
@@ -277,6 +279,7 @@ fn a_ray_in_the_triangles_plane_is_a_miss_in_every_kernel() {
             let ours = ch11::leaf_triangles::watertight(&v, &fast, interval);
             assert_eq!(ours, None, "{ray:?}, inlined");
             three_edges_at_once(&v, &fast, theirs, cases);
+            four_at_once(&v, &fast, theirs, cases);
             cases += 1;
         }
     }
@@ -311,4 +314,67 @@ fn three_edges_at_once(
     _: &[raystep_core::DVec3; 3], _: &FastRay, _: Option<f64>, _: usize,
 ) -> bool {
     false
+}
+
+/// Step 8's test of a block holding `v` in lane `case % 4` (and three
+/// other triangles): that lane, as its leaf takes it, gives chapter 8's
+/// answer `theirs` bit for bit; and the AVX2 kernel (where the CPU has
+/// it) says what the lane-by-lane test says of every lane, bit for bit.
+fn four_at_once(
+    v: &[raystep_core::DVec3; 3], ray: &FastRay, theirs: Option<f64>,
+    case: usize,
+) {
+    use ch11::leaf4::{Lane, Triangle4, test4_scalar, test4_where_available};
+    let centre = (v[0] + v[1] + v[2]) / 3.0;
+    let others = [
+        [v[0], v[2], v[1]],
+        v.map(|p| centre + 1.5 * (p - centre)),
+        v.map(|p| p + (v[1] - v[0]) * 0.25),
+    ];
+    let lane = case % 4;
+    let mut block = Triangle4 {
+        rows: [[[0.0; 4]; 3]; 3],
+    };
+    let mut k = 0;
+    for i in 0..4 {
+        let triangle = if i == lane {
+            *v
+        } else {
+            k += 1;
+            others[k - 1]
+        };
+        for (c, corner) in triangle.iter().enumerate() {
+            for axis in 0..3 {
+                block.rows[c][axis][i] = corner[axis] as f32;
+            }
+        }
+    }
+    assert_eq!(&block.corners(lane), v, "case {case}");
+    let interval = raystep_core::Interval::new(0.0, f64::INFINITY);
+    let resolve = |answer: Lane, i: usize| match answer {
+        Lane::Miss => None,
+        Lane::Unsure => ch08::PreparedRay::new(&ray.ray)
+            .triangle(&block.corners(i), interval),
+        Lane::Hit(t) => interval.contains(t).then_some(t),
+    };
+    let scalar = test4_scalar(&block, ray);
+    assert_eq!(
+        resolve(scalar.lane(lane), lane).map(f64::to_bits),
+        theirs.map(f64::to_bits),
+        "case {case}, four at once, lane by lane"
+    );
+    if let Some(simd) = test4_where_available(&block, ray) {
+        for i in 0..4 {
+            let bits = |l: Lane| match l {
+                Lane::Hit(t) => Some(t.to_bits()),
+                Lane::Miss => None,
+                Lane::Unsure => Some(u64::MAX),
+            };
+            assert_eq!(
+                bits(simd.lane(i)),
+                bits(scalar.lane(i)),
+                "case {case}, lane {i}: AVX2 against lane by lane"
+            );
+        }
+    }
 }

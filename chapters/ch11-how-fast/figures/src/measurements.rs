@@ -42,6 +42,9 @@ pub fn label(method: &Method) -> String {
                 Step::Compressed8Triangles => "6b",
                 Step::Wide8Parallel => "7a",
                 Step::Compressed8Parallel => "7b",
+                Step::Wide8Leaf4 => "8a",
+                Step::Compressed8Leaf4 => "8b",
+                Step::Wide8AnyUnsorted => "9",
             };
             format!("{number} {}", step.name())
         }
