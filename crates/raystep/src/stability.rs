@@ -9,7 +9,10 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use indicatif::{ProgressBar, ProgressStyle};
-use raystep_stability::{Budget, Expect, catalogue, run_catalogue, table};
+use raystep_stability::{
+    Budget, Case, Expect, Row, catalogue, groups, run_catalogue, run_group,
+    table,
+};
 
 use crate::atomic_file;
 use crate::error::Error;
@@ -29,6 +32,13 @@ pub struct Options {
     /// Also write the book's Markdown table to FILE.
     #[arg(long, value_name = "FILE")]
     pub markdown: Option<PathBuf>,
+    /// Run only the cases of GROUP (as the table names it, for example
+    /// "accelerators (meshes)"). With --json, FILE's rows of the other
+    /// groups are kept (read from it first), so the book's table can be
+    /// brought up to date one group at a time; --markdown then needs
+    /// --json.
+    #[arg(long, value_name = "GROUP")]
+    pub group: Option<String>,
 }
 
 /// Runs the catalogue, prints the table, writes the files.
@@ -49,11 +59,40 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         rays: options.rays,
         inputs: options.inputs,
     };
-    let bar = progress_bar(catalogue().len() as u64);
-    let rows = run_catalogue(&budget, &mut |case| {
+    if let Some(group) = &options.group
+        && !groups().contains(&group.as_str())
+    {
+        return Err(Error::Usage(format!(
+            "--group: no group {group:?} in the catalogue; its groups: {}",
+            groups().join(", ")
+        )));
+    }
+    // With --group, the other groups' rows come from the JSON file.
+    let earlier = match (&options.group, &options.json) {
+        (None, _) => None,
+        (Some(_), Some(path)) => Some(earlier_rows(path)?),
+        (Some(_), None) if options.markdown.is_some() => {
+            return Err(Error::Usage(
+                "--markdown with --group needs --json: the other groups' \
+                 rows are read from it"
+                    .into(),
+            ));
+        }
+        (Some(_), None) => None,
+    };
+    let cases = match &options.group {
+        Some(group) => catalogue().iter().filter(|c| c.group == group).count(),
+        None => catalogue().len(),
+    };
+    let bar = progress_bar(cases as u64);
+    let mut started = |case: &Case| {
         bar.set_message(case.name);
         bar.inc(1);
-    })
+    };
+    let rows = match &options.group {
+        Some(group) => run_group(group, &budget, &mut started),
+        None => run_catalogue(&budget, &mut started),
+    }
     .map_err(Error::Usage)?;
     bar.finish_and_clear();
     print!("{}", table::text(&rows));
@@ -67,19 +106,39 @@ pub fn run(options: &Options) -> Result<ExitCode, Error> {
         table::cases(&rows),
         rows.len()
     );
+    // What the files hold: this run's rows, or (with --group) the file's
+    // rows with this group's replaced.
+    let written = match (&options.group, earlier) {
+        (Some(group), Some(earlier)) => table::merge(earlier, group, rows),
+        _ => rows,
+    };
     if let Some(path) = &options.json {
-        let mut text = serde_json::to_string_pretty(&rows)
+        let mut text = serde_json::to_string_pretty(&written)
             .map_err(|e| Error::Usage(format!("{}: {e}", path.display())))?;
         text.push('\n');
         atomic_file::write(path, text.as_bytes())?;
     }
     if let Some(path) = &options.markdown {
-        atomic_file::write(path, table::markdown(&rows).as_bytes())?;
+        atomic_file::write(path, table::markdown(&written).as_bytes())?;
     }
     Ok(if bugs == 0 {
         ExitCode::SUCCESS
     } else {
         ExitCode::FAILURE
+    })
+}
+
+/// The rows an earlier run wrote to `path` as JSON.
+fn earlier_rows(path: &std::path::Path) -> Result<Vec<Row>, Error> {
+    let name = path.display();
+    let text = std::fs::read_to_string(path).map_err(|e| {
+        Error::Usage(format!(
+            "{name}: {e} (with --group, the other groups' rows are read \
+             from the --json file)"
+        ))
+    })?;
+    serde_json::from_str(&text).map_err(|e| {
+        Error::Usage(format!("{name}:{}:{}: {e}", e.line(), e.column()))
     })
 }
 

@@ -149,15 +149,46 @@ pub struct Row {
     pub expect: Expect,
 }
 
+/// The catalogue's groups, in its order.
+pub fn groups() -> Vec<&'static str> {
+    let mut groups: Vec<&'static str> =
+        catalogue().iter().map(|case| case.group).collect();
+    groups.dedup();
+    groups
+}
+
 /// Runs every case of the catalogue with `budget`, telling `started`
 /// each case before it runs; an error (before any case runs) if the
 /// bunny the cases need cannot be read.
 pub fn run_catalogue(
     budget: &Budget, started: &mut dyn FnMut(&Case),
 ) -> Result<Vec<Row>, String> {
+    run_cases(catalogue(), budget, started)
+}
+
+/// Runs the cases of one group of the catalogue (named as the table
+/// names it), as [`run_catalogue`] runs them all.
+pub fn run_group(
+    group: &str, budget: &Budget, started: &mut dyn FnMut(&Case),
+) -> Result<Vec<Row>, String> {
+    if !groups().contains(&group) {
+        return Err(format!(
+            "no group {group:?} in the catalogue; its groups: {}",
+            groups().join(", ")
+        ));
+    }
+    let cases = catalogue().into_iter().filter(|c| c.group == group);
+    run_cases(cases.collect(), budget, started)
+}
+
+/// Runs `cases` with `budget`, telling `started` each case before it
+/// runs.
+fn run_cases(
+    cases: Vec<Case>, budget: &Budget, started: &mut dyn FnMut(&Case),
+) -> Result<Vec<Row>, String> {
     scenes::load_bunny()?;
     let mut rows = Vec::new();
-    for case in catalogue() {
+    for case in cases {
         started(&case);
         for (count, expect) in (case.run)(budget) {
             rows.push(Row {

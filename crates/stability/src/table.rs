@@ -3,7 +3,7 @@
 //! shown as 0), the failures a method is not built to survive marked.
 use std::fmt::Write;
 
-use crate::{Expect, Row};
+use crate::{Expect, Row, groups};
 
 /// The table for a terminal: one block per case, one line per method.
 pub fn text(rows: &[Row]) -> String {
@@ -77,4 +77,60 @@ pub fn cases(rows: &[Row]) -> usize {
         .collect();
     names.dedup();
     names.len()
+}
+
+/// The rows of a whole run with one group's rows run again: `fresh`
+/// (the rows of `group`) in place of `earlier`'s rows of that group, the
+/// other groups' rows kept, every group in the catalogue's order (rows of
+/// a group the catalogue no longer has are dropped).
+pub fn merge(earlier: Vec<Row>, group: &str, fresh: Vec<Row>) -> Vec<Row> {
+    let mut rows = Vec::with_capacity(earlier.len() + fresh.len());
+    for name in groups() {
+        if name == group {
+            rows.extend(fresh.iter().cloned());
+        } else {
+            rows.extend(earlier.iter().filter(|r| r.group == name).cloned());
+        }
+    }
+    rows
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Count;
+
+    fn row(group: &str, case: &str, failures: u64) -> Row {
+        Row {
+            group: group.to_string(),
+            case: case.to_string(),
+            what: String::new(),
+            count: Count::new("m", failures, 10),
+            expect: Expect::Never,
+        }
+    }
+
+    #[test]
+    fn merging_replaces_one_group_and_keeps_the_others_in_order() {
+        let all = groups();
+        let (first, middle, last) =
+            (all[0], all[all.len() / 2], all[all.len() - 1]);
+        // The earlier file in another order, with a group since removed.
+        let earlier = vec![
+            row(last, "l", 0),
+            row(middle, "old", 7),
+            row("gone", "g", 0),
+            row(first, "f", 0),
+            row(middle, "old too", 7),
+        ];
+        let fresh = vec![row(middle, "new", 0)];
+        let merged = merge(earlier, middle, fresh);
+        let names: Vec<&str> = merged.iter().map(|r| r.case.as_str()).collect();
+        assert_eq!(names, ["f", "new", "l"]);
+        // A group the file did not have yet is added in its place.
+        let merged =
+            merge(vec![row(last, "l", 0)], first, vec![row(first, "f", 1)]);
+        let names: Vec<&str> = merged.iter().map(|r| r.case.as_str()).collect();
+        assert_eq!(names, ["f", "l"]);
+    }
 }
