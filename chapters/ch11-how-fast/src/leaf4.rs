@@ -147,6 +147,9 @@ pub struct Blocks4 {
     pub lanes: Vec<u8>,
     /// Tested with AVX2 (checked when built), else lane by lane.
     simd: bool,
+    /// Step 10: a leaf's blocks tested two at once with AVX-512 (set
+    /// only where the CPU has it).
+    pairs: bool,
 }
 
 /// What a leaf's link becomes: `(first block, blocks)` for the leaf whose
@@ -166,6 +169,7 @@ impl Blocks4 {
             ids: Vec::new(),
             lanes: Vec::new(),
             simd: avx2(),
+            pairs: false,
         };
         let mut links = vec![(0, 0); tree.order.len()];
         for leaf in tree.nodes.iter().filter(|n| n.is_leaf()) {
@@ -222,7 +226,18 @@ impl Blocks4 {
     /// AVX2 kernel to it).
     pub fn lane_by_lane(mut self) -> Blocks4 {
         self.simd = false;
+        self.pairs = false;
         self
+    }
+
+    /// Step 10: a leaf's blocks tested two at once where this CPU has
+    /// AVX-512 (as before elsewhere); whether it has.
+    pub fn in_pairs(&mut self) -> bool {
+        #[cfg(target_arch = "x86_64")]
+        {
+            self.pairs = self.simd && crate::pairs512::available();
+        }
+        self.pairs
     }
 
     // ANCHOR: leaf4
@@ -236,43 +251,77 @@ impl Blocks4 {
         &self, (first, count): (u32, u32), ray: &FastRay,
         interval: &mut Interval, any: bool, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
+        #[cfg(target_arch = "x86_64")]
+        if self.pairs {
+            // SAFETY: `pairs` is set only where the CPU has AVX-512F.
+            return unsafe {
+                crate::pairs512::leaf(
+                    self,
+                    (first, count),
+                    ray,
+                    interval,
+                    any,
+                    counts,
+                )
+            };
+        }
         let mut closest = None;
         for b in first as usize..(first + count) as usize {
-            let block = &self.blocks[b];
-            let lanes = usize::from(self.lanes[b]);
-            counts.triangles += lanes as u64;
-            let tested = self.test(block, ray);
-            for lane in 0..lanes {
-                let t = match tested.lane(lane) {
-                    Lane::Miss => continue,
-                    Lane::Unsure => {
-                        let corners = block.corners(lane);
-                        let exact = PreparedRay::new(&ray.ray);
-                        match exact.triangle(&corners, *interval) {
-                            Some(t) => t,
-                            None => continue,
-                        }
-                    }
-                    Lane::Hit(t) if interval.contains(t) => t,
-                    Lane::Hit(_) => continue,
-                };
-                *interval = interval.with_max(t);
-                closest = Some(MeshHit {
-                    triangle: self.ids[b][lane],
-                    t,
-                });
-                if any {
-                    return closest;
-                }
+            let tested = self.test(&self.blocks[b], ray);
+            if self.take(b, tested, ray, interval, any, &mut closest, counts)
+                && any
+            {
+                return closest;
             }
         }
         closest
+    }
+
+    /// Block `b`'s lanes, as [`test4`] found them, taken in order: each
+    /// hit within `interval` shortens it and becomes `closest`; whether
+    /// one did (with `any`, the first ends the block).
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn take(
+        &self, b: usize, tested: Tested, ray: &FastRay,
+        interval: &mut Interval, any: bool, closest: &mut Option<MeshHit>,
+        counts: &mut TraceCounts,
+    ) -> bool {
+        let block = &self.blocks[b];
+        let lanes = usize::from(self.lanes[b]);
+        counts.triangles += lanes as u64;
+        let mut found = false;
+        for lane in 0..lanes {
+            let t = match tested.lane(lane) {
+                Lane::Miss => continue,
+                Lane::Unsure => {
+                    let corners = block.corners(lane);
+                    let exact = PreparedRay::new(&ray.ray);
+                    match exact.triangle(&corners, *interval) {
+                        Some(t) => t,
+                        None => continue,
+                    }
+                }
+                Lane::Hit(t) if interval.contains(t) => t,
+                Lane::Hit(_) => continue,
+            };
+            *interval = interval.with_max(t);
+            *closest = Some(MeshHit {
+                triangle: self.ids[b][lane],
+                t,
+            });
+            found = true;
+            if any {
+                break;
+            }
+        }
+        found
     }
     // ANCHOR_END: leaf4
 
     /// The four lanes of `block`, with AVX2 where built so.
     #[inline(always)]
-    fn test(&self, block: &Triangle4, ray: &FastRay) -> Tested {
+    pub(crate) fn test(&self, block: &Triangle4, ray: &FastRay) -> Tested {
         #[cfg(target_arch = "x86_64")]
         if self.simd {
             // SAFETY: `simd` is set only where the CPU has AVX2.
@@ -297,12 +346,19 @@ pub enum Lane {
 /// an unsure sign.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Tested {
-    t: [f64; 4],
-    hit: u32,
-    unsure: u32,
+    pub(crate) t: [f64; 4],
+    pub(crate) hit: u32,
+    pub(crate) unsure: u32,
 }
 
 impl Tested {
+    /// No lane hit, none unsure.
+    pub const NONE: Tested = Tested {
+        t: [0.0; 4],
+        hit: 0,
+        unsure: 0,
+    };
+
     /// Lane `i`.
     #[inline(always)]
     pub fn lane(&self, i: usize) -> Lane {

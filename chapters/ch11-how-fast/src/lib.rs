@@ -19,7 +19,9 @@
 //!   the build ([`parallel_build`]).
 //! - Step 8 ([`leaf4`]): leaves of four triangles, merged where the SAH
 //!   says a block of four beats the nodes above it, tested four at once
-//!   (AVX2).
+//!   (AVX2); step 9: shadow rays take the children unsorted.
+//! - Step 10 ([`pairs512`]): a leaf's two blocks tested at once in the
+//!   eight lanes of AVX-512, where the CPU has it.
 //!
 //! The appendix has no exercises: it is written for engineers, after the
 //! lecture.
@@ -29,6 +31,8 @@ pub mod binary;
 pub mod compressed;
 pub mod leaf4;
 pub mod leaf_triangles;
+#[cfg(target_arch = "x86_64")]
+pub mod pairs512;
 pub mod parallel_build;
 #[cfg(target_arch = "x86_64")]
 mod prefetch;

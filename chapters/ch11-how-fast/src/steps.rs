@@ -121,12 +121,19 @@ pub enum Step {
     /// the node's order instead of nearest first.
     #[value(name = "bvh8-any-unsorted")]
     Wide8AnyUnsorted,
+    /// Step 10: `bvh8-any-unsorted`, a leaf's two blocks tested at once
+    /// with AVX-512 (as step 9 where the CPU lacks it).
+    ///
+    /// 10: 9, and a leaf's two blocks tested at once in the eight lanes
+    /// of AVX-512 (where the CPU has it).
+    #[value(name = "bvh8-avx512-pairs")]
+    Wide8Pairs512,
 }
 
 impl Step {
     /// Every step, in order: the list [`clap::ValueEnum`] derives from
     /// the declaration above (a test holds the two equal).
-    pub const ALL: [Step; 18] = [
+    pub const ALL: [Step; 19] = [
         Step::Ordered,
         Step::LeafLayout,
         Step::SweepTree,
@@ -145,6 +152,7 @@ impl Step {
         Step::Wide8Leaf4,
         Step::Compressed8Leaf4,
         Step::Wide8AnyUnsorted,
+        Step::Wide8Pairs512,
     ];
 
     /// The name tables and the command line use: its `#[value(name)]`.
@@ -178,6 +186,9 @@ pub enum Kernel {
     /// AVX2, where the CPU has it: 8 boxes, compressed or not, the walk
     /// compiled with AVX2 (which step 6's triangle test needs).
     Avx2,
+    /// AVX-512 and AVX2, where the CPU has both: step 10's, the walk
+    /// `Avx2`'s, a leaf's two blocks tested at once with AVX-512.
+    Avx512,
 }
 
 /// The structure a step builds.
@@ -255,8 +266,8 @@ impl FastBvh {
                 let wide: Wide<8> = Wide::new(triangles, tree, single);
                 Built::Wide8(wide.with_lanes(), kernel)
             }
-            Step::Wide8Leaf4 | Step::Wide8AnyUnsorted => {
-                let kernel = if avx2() {
+            Step::Wide8Leaf4 | Step::Wide8AnyUnsorted | Step::Wide8Pairs512 => {
+                let mut kernel = if avx2() {
                     Kernel::Avx2
                 } else if avx() {
                     Kernel::Avx
@@ -264,10 +275,13 @@ impl FastBvh {
                     Kernel::Scalar
                 };
                 let wide = leaves_of_four(triangles, &merge_leaves(tree));
-                let wide = match step {
-                    Step::Wide8AnyUnsorted => wide.unordered_any(),
-                    _ => wide,
+                let mut wide = match step {
+                    Step::Wide8Leaf4 => wide,
+                    _ => wide.unordered_any(),
                 };
+                if step == Step::Wide8Pairs512 && wide.in_pairs() {
+                    kernel = Kernel::Avx512;
+                }
                 Built::Wide8(wide, kernel)
             }
             Step::Compressed8Leaf4 => {
@@ -373,8 +387,10 @@ impl FastBvh {
                 w.trace::<ANY>(ray, interval, counts, scalar_boxes)
             }
             #[cfg(target_arch = "x86_64")]
-            Built::Wide8(w, Kernel::Avx2) => {
-                // SAFETY: the kernel is Avx2 only where `avx2()` said so.
+            Built::Wide8(w, Kernel::Avx2 | Kernel::Avx512) => {
+                // SAFETY: the kernel is Avx2 only where `avx2()` said so,
+                // Avx512 only where `pairs512::available()` did (AVX2
+                // with AVX-512).
                 unsafe { simd8::trace_avx2::<ANY>(w, ray, interval, counts) }
             }
             #[cfg(target_arch = "x86_64")]

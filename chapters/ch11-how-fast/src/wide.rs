@@ -157,6 +157,12 @@ impl<const W: usize, N: Links> Wide<W, N> {
         }
     }
 
+    /// Step 10: step 8's blocks, if any, tested two at once where this
+    /// CPU has AVX-512; whether they are.
+    pub fn in_pairs(&mut self) -> bool {
+        self.leaves.blocks.as_mut().is_some_and(|b| b.in_pairs())
+    }
+
     /// Bytes of nodes, triangles and indices.
     pub fn bytes(&self) -> usize {
         self.nodes.len() * size_of::<N>() + self.leaves.bytes()

@@ -363,13 +363,13 @@ fn four_at_once(
         theirs.map(f64::to_bits),
         "case {case}, four at once, lane by lane"
     );
+    let bits = |l: Lane| match l {
+        Lane::Hit(t) => Some(t.to_bits()),
+        Lane::Miss => None,
+        Lane::Unsure => Some(u64::MAX),
+    };
     if let Some(simd) = test4_where_available(&block, ray) {
         for i in 0..4 {
-            let bits = |l: Lane| match l {
-                Lane::Hit(t) => Some(t.to_bits()),
-                Lane::Miss => None,
-                Lane::Unsure => Some(u64::MAX),
-            };
             assert_eq!(
                 bits(simd.lane(i)),
                 bits(scalar.lane(i)),
@@ -377,4 +377,27 @@ fn four_at_once(
             );
         }
     }
+    // Step 10: the block beside another (its lanes reversed), eight
+    // lanes at once with AVX-512 where the CPU has it, each block's
+    // lanes as the lane-by-lane test says, bit for bit.
+    let mut reversed = block;
+    for row in reversed.rows.iter_mut().flatten() {
+        row.reverse();
+    }
+    let pair = [&block, &reversed];
+    #[cfg(target_arch = "x86_64")]
+    if let Some(tested) = ch11::pairs512::test8_where_available(pair, ray) {
+        for (k, one) in pair.into_iter().enumerate() {
+            let scalar = test4_scalar(one, ray);
+            for i in 0..4 {
+                assert_eq!(
+                    bits(tested[k].lane(i)),
+                    bits(scalar.lane(i)),
+                    "case {case}, block {k}, lane {i}: AVX-512 against \
+                     lane by lane"
+                );
+            }
+        }
+    }
+    let _ = pair;
 }

@@ -45,6 +45,7 @@ pub fn label(method: &Method) -> String {
                 Step::Wide8Leaf4 => "8a",
                 Step::Compressed8Leaf4 => "8b",
                 Step::Wide8AnyUnsorted => "9",
+                Step::Wide8Pairs512 => "10",
             };
             format!("{number} {}", step.name())
         }
