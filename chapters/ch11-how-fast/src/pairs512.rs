@@ -1,11 +1,12 @@
 //! Step 10: a leaf's two blocks at once. Step 8's leaves hold up to two
 //! blocks of four triangles; where the CPU has AVX-512, both go into the
 //! eight `f64` lanes of one register and are tested by one run of the
-//! same instructions: [`test4`](crate::leaf4::Tested)'s steps, lane for
+//! same instructions: step 8's test's steps (`leaf4.rs`), lane for
 //! lane the same operations on the same numbers in the same order, so the
 //! same answers bit for bit. The walk stays step 9's, compiled with
 //! AVX2; it calls this test (a function compiled with more features than
-//! its caller is never inlined into it). A walk compiled with AVX-512
+//! its caller is never inlined into it). It is slower than step 9 on
+//! the CPU the appendix measured, and a walk compiled with AVX-512
 //! throughout, the test inlined, was slower still: see the appendix.
 #![cfg(target_arch = "x86_64")]
 use std::arch::x86_64::*;

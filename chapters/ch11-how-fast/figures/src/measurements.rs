@@ -54,9 +54,15 @@ pub fn label(method: &Method) -> String {
     }
 }
 
-/// The steps whose threads are measured too (tracing, and the build
-/// on the pool's threads).
-const THREADED: [Step; 2] = [Step::Wide8Parallel, Step::Compressed8Parallel];
+/// The steps measured on two threads too: 7a and 7b (tracing, and the
+/// build on the pool's threads), and the fastest on one thread, 8b and
+/// 9 (tracing; their build stays on one).
+const THREADED: [Step; 4] = [
+    Step::Wide8Parallel,
+    Step::Compressed8Parallel,
+    Step::Compressed8Leaf4,
+    Step::Wide8AnyUnsorted,
+];
 
 /// The mesh's triangles; an error names the file.
 fn mesh() -> Result<Vec<[DVec3; 3]>, String> {
