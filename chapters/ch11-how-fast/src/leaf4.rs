@@ -172,8 +172,19 @@ impl Blocks4 {
             pairs: false,
         };
         let mut links = vec![(0, 0); tree.order.len()];
-        for leaf in tree.nodes.iter().filter(|n| n.is_leaf()) {
-            let (first, count) = (leaf.first as usize, leaf.count as usize);
+        let leaves: Vec<(usize, usize)> = (tree.nodes.iter())
+            .filter(|n| n.is_leaf())
+            .map(|n| (n.first as usize, n.count as usize))
+            .collect();
+        for (k, &(first, count)) in leaves.iter().enumerate() {
+            // The triangles are read in the tree's order, all over the
+            // mesh: a later leaf's asked for from memory now.
+            #[cfg(target_arch = "x86_64")]
+            if let Some(&(first, count)) = leaves.get(k + 4) {
+                for &id in &tree.order[first..first + count] {
+                    crate::prefetch::prefetch(&triangles[id as usize]);
+                }
+            }
             let start = built.blocks.len() as u32;
             for chunk in tree.order[first..first + count].chunks(4) {
                 let mut block = Triangle4 {
@@ -230,13 +241,18 @@ impl Blocks4 {
         self
     }
 
-    /// Step 10: a leaf's blocks tested two at once where this CPU has
-    /// AVX-512 (as before elsewhere); whether it has.
-    pub fn in_pairs(&mut self) -> bool {
-        #[cfg(target_arch = "x86_64")]
-        {
-            self.pairs = self.simd && crate::pairs512::available();
-        }
+    /// Step 10: a leaf's blocks to be tested two at once
+    /// ([`pairs512`](crate::pairs512)), if `avx512` (which must say
+    /// whether the CPU has AVX-512F) and they are tested with AVX2;
+    /// whether they will be.
+    pub(crate) fn in_pairs(&mut self, avx512: bool) -> bool {
+        self.pairs = self.simd && avx512;
+        self.pairs
+    }
+
+    /// Are they tested two at once (step 10)?
+    #[inline(always)]
+    pub fn pairs(&self) -> bool {
         self.pairs
     }
 
@@ -251,20 +267,6 @@ impl Blocks4 {
         &self, (first, count): (u32, u32), ray: &FastRay,
         interval: &mut Interval, any: bool, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
-        #[cfg(target_arch = "x86_64")]
-        if self.pairs {
-            // SAFETY: `pairs` is set only where the CPU has AVX-512F.
-            return unsafe {
-                crate::pairs512::leaf(
-                    self,
-                    (first, count),
-                    ray,
-                    interval,
-                    any,
-                    counts,
-                )
-            };
-        }
         let mut closest = None;
         for b in first as usize..(first + count) as usize {
             let tested = self.test(&self.blocks[b], ray);

@@ -223,6 +223,17 @@ impl Leaves {
         }
     }
 
+    /// Step 8's leaves before their blocks: no triangle laid out one by
+    /// one (the blocks will hold them all), only those outside the tree.
+    pub fn for_blocks(triangles: &[[DVec3; 3]], tree: &Bvh) -> Leaves {
+        Leaves {
+            triangles: LeafTriangles::Single(Vec::new()),
+            ids: Vec::new(),
+            outside: Outside::new(triangles, &tree.unbounded),
+            blocks: None,
+        }
+    }
+
     /// Step 6: the same triangles laid out for the test with SIMD
     /// ([`LeafTriangles::with_lanes`]).
     pub fn with_lanes(self) -> Leaves {
@@ -260,6 +271,22 @@ impl Leaves {
         interval: &mut Interval, any: bool, counts: &mut TraceCounts,
     ) -> Option<MeshHit> {
         if let Some(blocks) = &self.blocks {
+            // Step 10: two blocks at once, where built so.
+            #[cfg(target_arch = "x86_64")]
+            if blocks.pairs() {
+                // SAFETY: the blocks are paired only where the CPU has
+                // AVX-512F (`Wide::in_pairs`).
+                return unsafe {
+                    crate::pairs512::leaf(
+                        blocks,
+                        (first, count),
+                        ray,
+                        interval,
+                        any,
+                        counts,
+                    )
+                };
+            }
             return blocks.leaf((first, count), ray, interval, any, counts);
         }
         let mut closest = None;

@@ -437,10 +437,14 @@ impl MeshAccelerator for FastBvh {
 /// Step 8's structure: the 8-wide tree of `tree` with its leaves in
 /// blocks of four (step 6's leaves if a coordinate is not an `f32`).
 fn leaves_of_four(triangles: &[[DVec3; 3]], tree: &Bvh) -> Wide<8> {
-    let wide: Wide<8> = Wide::new(triangles, tree, true);
     match crate::leaf4::Blocks4::new(triangles, tree) {
-        Some((blocks, links)) => wide.with_blocks(blocks, &links),
-        None => wide.with_lanes(),
+        // The blocks hold every triangle: none laid out one by one.
+        Some((blocks, links)) => {
+            let leaves =
+                crate::leaf_triangles::Leaves::for_blocks(triangles, tree);
+            Wide::with_leaves(tree, leaves).with_blocks(blocks, &links)
+        }
+        None => Wide::new(triangles, tree, true).with_lanes(),
     }
 }
 

@@ -73,6 +73,11 @@ impl<const W: usize> Wide<W> {
     /// surface area into its own two, until it has `W` children or only
     /// leaves (the greedy collapse of Wald et al. 2008).
     pub fn new(triangles: &[[DVec3; 3]], tree: &Bvh, single: bool) -> Self {
+        Wide::with_leaves(tree, Leaves::new(triangles, tree, single))
+    }
+
+    /// [`Wide::new`] with its leaves' triangles laid out already.
+    pub fn with_leaves(tree: &Bvh, leaves: Leaves) -> Self {
         let mut nodes = Vec::new();
         let root = tree.nodes.first().map(|root| {
             if root.count > 0 {
@@ -89,7 +94,7 @@ impl<const W: usize> Wide<W> {
         Wide {
             nodes,
             root,
-            leaves: Leaves::new(triangles, tree, single),
+            leaves,
             unordered_any: false,
         }
     }
@@ -160,7 +165,14 @@ impl<const W: usize, N: Links> Wide<W, N> {
     /// Step 10: step 8's blocks, if any, tested two at once where this
     /// CPU has AVX-512; whether they are.
     pub fn in_pairs(&mut self) -> bool {
-        self.leaves.blocks.as_mut().is_some_and(|b| b.in_pairs())
+        #[cfg(target_arch = "x86_64")]
+        let avx512 = crate::pairs512::available();
+        #[cfg(not(target_arch = "x86_64"))]
+        let avx512 = false;
+        self.leaves
+            .blocks
+            .as_mut()
+            .is_some_and(|b| b.in_pairs(avx512))
     }
 
     /// Bytes of nodes, triangles and indices.
