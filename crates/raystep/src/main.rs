@@ -65,7 +65,6 @@ mod workspace_copy;
 use std::io::{self, IsTerminal};
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::time::Duration;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
@@ -245,22 +244,8 @@ enum Command {
         /// Build in this target directory [env: RAYSTEP_CHECK_TARGET_DIR; default: cargo's].
         #[arg(long, value_name = "DIR")]
         target_dir: Option<PathBuf>,
-        /// Kill a test binary still running after this many seconds; its
-        /// exercise is `timed out`.
-        #[arg(long, value_name = "SECS", value_parser = seconds,
-              default_value_t = run_options::DEFAULT_TIMEOUT_SECS as f64)]
-        timeout: f64,
-        /// Stop the build or a test binary that asks for more memory than
-        /// this (each process: the compiler, a test binary, what it starts);
-        /// its exercise fails, `out of memory (limit 2 GiB, --memory)`.
-        #[arg(long, value_name = "SIZE", value_parser = run_options::parse_size,
-              default_value = run_options::DEFAULT_MEMORY)]
-        memory: u64,
-        /// Stop a test binary that prints more than this (stdout and stderr
-        /// together); its exercise fails, `printed more than 8 MiB`.
-        #[arg(long, value_name = "SIZE", value_parser = run_options::parse_size,
-              default_value = run_options::DEFAULT_OUTPUT)]
-        output: u64,
+        #[command(flatten)]
+        limits: run_options::LimitArgs,
         /// Do not echo cargo's progress on stderr.
         #[arg(long, short)]
         quiet: bool,
@@ -334,22 +319,8 @@ enum Command {
         /// Also write the table as JSON to this file.
         #[arg(long, value_name = "FILE")]
         json: Option<PathBuf>,
-        /// Kill a test binary still running after this many seconds; its
-        /// exercise is `timed out`.
-        #[arg(long, value_name = "SECS", value_parser = seconds,
-              default_value_t = run_options::DEFAULT_TIMEOUT_SECS as f64)]
-        timeout: f64,
-        /// Stop the build or a test binary that asks for more memory than
-        /// this (each process: the compiler, a test binary, what it starts);
-        /// its exercise fails, `out of memory (limit 2 GiB, --memory)`.
-        #[arg(long, value_name = "SIZE", value_parser = run_options::parse_size,
-              default_value = run_options::DEFAULT_MEMORY)]
-        memory: u64,
-        /// Stop a test binary that prints more than this (stdout and stderr
-        /// together); its exercise fails, `printed more than 8 MiB`.
-        #[arg(long, value_name = "SIZE", value_parser = run_options::parse_size,
-              default_value = run_options::DEFAULT_OUTPUT)]
-        output: u64,
+        #[command(flatten)]
+        limits: run_options::LimitArgs,
         /// Build and run each student's code inside bubblewrap: no network,
         /// only the scratch copy writable, the toolchain and cargo's registry
         /// read-only, nothing else of the file system visible. `auto`: where
@@ -407,14 +378,6 @@ impl From<FormatArg> for raystep_figure::Format {
             FormatArg::Png => raystep_figure::Format::Png,
             FormatArg::Both => raystep_figure::Format::Both,
         }
-    }
-}
-
-/// Parses `--timeout`: a positive number of seconds, `60` or `2.5`.
-fn seconds(arg: &str) -> Result<f64, String> {
-    match arg.trim().parse::<f64>() {
-        Ok(s) if s > 0.0 && Duration::try_from_secs_f64(s).is_ok() => Ok(s),
-        _ => Err("expected a positive number of seconds".to_string()),
     }
 }
 
@@ -553,9 +516,7 @@ fn main() -> ExitCode {
             chapter,
             reference,
             target_dir,
-            timeout,
-            memory,
-            output,
+            limits,
             quiet,
             json,
             junit,
@@ -563,9 +524,9 @@ fn main() -> ExitCode {
             chapter,
             reference,
             target_dir: check_target_dir(target_dir),
-            timeout: Duration::from_secs_f64(timeout),
-            memory,
-            output,
+            timeout: limits.timeout(),
+            memory: limits.memory,
+            output: limits.output,
             quiet,
             json,
             junit,
@@ -584,9 +545,7 @@ fn main() -> ExitCode {
             chapter,
             out,
             json,
-            timeout,
-            memory,
-            output,
+            limits,
             sandbox,
             jobs,
             resume,
@@ -597,9 +556,9 @@ fn main() -> ExitCode {
             chapter,
             out,
             json,
-            timeout: Duration::from_secs_f64(timeout),
-            memory,
-            output,
+            timeout: limits.timeout(),
+            memory: limits.memory,
+            output: limits.output,
             sandbox,
             jobs,
             resume,
@@ -643,8 +602,8 @@ mod tests {
     fn the_timeout_is_a_positive_number_of_seconds() {
         let timeout = |args: &[&str]| match Cli::try_parse_from(args) {
             Ok(Cli {
-                command: Command::Check { timeout, .. },
-            }) => Ok(timeout),
+                command: Command::Check { limits, .. },
+            }) => Ok(limits.timeout),
             Ok(other) => panic!("{other:?}"),
             Err(error) => Err(one_line(&error.to_string())),
         };

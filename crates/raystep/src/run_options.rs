@@ -66,6 +66,43 @@ impl Run {
     }
 }
 
+/// The limits `raystep check` and `raystep grade` take on the command
+/// line.
+#[derive(Debug, Clone, clap::Args)]
+pub struct LimitArgs {
+    /// Kill a test binary still running after this many seconds; its
+    /// exercise is `timed out`.
+    #[arg(long, value_name = "SECS", value_parser = seconds,
+          default_value_t = DEFAULT_TIMEOUT_SECS as f64)]
+    pub timeout: f64,
+    /// Stop the build or a test binary that asks for more memory than
+    /// this (each process: the compiler, a test binary, what it starts);
+    /// its exercise fails, `out of memory (limit 2 GiB, --memory)`.
+    #[arg(long, value_name = "SIZE", value_parser = parse_size,
+          default_value = DEFAULT_MEMORY)]
+    pub memory: u64,
+    /// Stop a test binary that prints more than this (stdout and stderr
+    /// together); its exercise fails, `printed more than 8 MiB`.
+    #[arg(long, value_name = "SIZE", value_parser = parse_size,
+          default_value = DEFAULT_OUTPUT)]
+    pub output: u64,
+}
+
+impl LimitArgs {
+    /// `--timeout` as a duration.
+    pub fn timeout(&self) -> Duration {
+        Duration::from_secs_f64(self.timeout)
+    }
+}
+
+/// Parses `--timeout`: a positive number of seconds, `60` or `2.5`.
+fn seconds(arg: &str) -> Result<f64, String> {
+    match arg.trim().parse::<f64>() {
+        Ok(s) if s > 0.0 && Duration::try_from_secs_f64(s).is_ok() => Ok(s),
+        _ => Err("expected a positive number of seconds".to_string()),
+    }
+}
+
 /// The default of `--timeout`, in seconds. The slowest test binaries of the
 /// reference solutions (chapter 7's unit tests and `tests/agreement.rs`, a
 /// debug build) take under a second on two cores; a minute leaves a wide

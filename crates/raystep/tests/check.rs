@@ -14,6 +14,7 @@ use std::process::Command;
 use std::time::Instant;
 
 mod common;
+mod one_chapter;
 use common::{outer_target, workspace};
 
 /// (chapter id, exercises) for every `chapters/chNN-*` folder.
@@ -186,93 +187,13 @@ fn verdicts_do_not_depend_on_cargo_settings() {
     assert_eq!(configured, plain, "with {SETTINGS:?}:\n{stderr}");
 }
 
-/// Writes `text` to `path` unless it holds it already (cargo rebuilds what
-/// has a newer modification time).
-fn write(path: &Path, text: &str) {
-    if fs::read_to_string(path).ok().as_deref() != Some(text) {
-        fs::create_dir_all(path.parent().unwrap()).unwrap();
-        fs::write(path, text).unwrap();
-    }
-}
-
-/// A throwaway workspace shaped like the real one, in `<tmp>/<name>`:
-/// chapter 1 with the same package and exercise names, whose stubs are
-/// `line` (of `slope`) and `plane` (of `normal_z`); the reference bodies
-/// are right.
-fn throwaway_workspace(name: &str, line: &str, plane: &str) -> PathBuf {
-    let root = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
-    let chapter = root.join("chapters/ch01-implicit-lines-planes");
-    write(
-        &root.join("Cargo.toml"),
-        "[workspace]\nresolver = \"3\"\nmembers = [\"chapters/ch01-implicit-lines-planes\"]\n",
-    );
-    write(
-        &chapter.join("Cargo.toml"),
-        "[package]\n\
-         name = \"ch01-implicit-lines-planes\"\n\
-         version = \"0.1.0\"\n\
-         edition = \"2024\"\n\
-         publish = false\n\n\
-         [lib]\n\
-         name = \"ch01\"\n\n\
-         [features]\n\
-         exercise = []\n",
-    );
-    write(
-        &chapter.join("src/lib.rs"),
-        "#[cfg_attr(feature = \"exercise\", path = \"../exercise/line_through_points.rs\")]\n\
-         mod line_through_points;\n\
-         #[cfg_attr(feature = \"exercise\", path = \"../exercise/plane_through_points.rs\")]\n\
-         mod plane_through_points;\n\n\
-         pub use line_through_points::slope;\n\
-         pub use plane_through_points::normal_z;\n\n\
-         #[cfg(test)]\n\
-         mod tests {\n\
-         \x20   #[test]\n\
-         \x20   fn a_unit_test() {}\n\
-         }\n",
-    );
-    let slope = "pub fn slope(p0: (f64, f64), p1: (f64, f64)) -> f64 {\n\
-                 \x20   (p1.1 - p0.1) / (p1.0 - p0.0)\n\
-                 }\n";
-    write(&chapter.join("src/line_through_points.rs"), slope);
-    write(&chapter.join("exercise/line_through_points.rs"), line);
-    write(&chapter.join("src/plane_through_points.rs"), NORMAL);
-    write(&chapter.join("exercise/plane_through_points.rs"), plane);
-    write(
-        &chapter.join("tests/line_through_points.rs"),
-        "#[test]\n\
-         fn slope_of_a_diagonal() {\n\
-         \x20   assert_eq!(ch01::slope((0.0, 0.0), (2.0, 2.0)), 1.0);\n\
-         }\n",
-    );
-    write(
-        &chapter.join("tests/plane_through_points.rs"),
-        "#[test]\n\
-         fn normal_of_the_xy_plane() {\n\
-         \x20   assert_eq!(ch01::normal_z((1.0, 0.0), (0.0, 1.0)), 1.0);\n\
-         }\n",
-    );
-    root
-}
-
-/// The right `normal_z` of the throwaway chapter.
-const NORMAL: &str = "pub fn normal_z(a: (f64, f64), b: (f64, f64)) -> f64 {\n\
-                      \x20   a.0 * b.1 - a.1 * b.0\n\
-                      }\n";
-
 /// The throwaway chapter where the stub of `line_through_points` loops
 /// forever and the one of `plane_through_points` is right.
 fn looping_workspace() -> PathBuf {
-    throwaway_workspace(
+    one_chapter::with_stubs(
         "check-timeout",
-        "pub fn slope(p0: (f64, f64), p1: (f64, f64)) -> f64 {\n\
-         \x20   let _ = (p0, p1);\n\
-         \x20   loop {\n\
-         \x20       std::thread::sleep(std::time::Duration::from_millis(10));\n\
-         \x20   }\n\
-         }\n",
-        NORMAL,
+        one_chapter::LOOPING_SLOPE,
+        one_chapter::RIGHT_NORMAL,
     )
 }
 
@@ -291,7 +212,7 @@ fn check_throwaway(root: &Path, args: &[&str]) -> (bool, String, String) {
 /// and the test, and the machine is none the worse.
 #[test]
 fn memory_and_output_floods_are_stopped_at_their_limits() {
-    let root = throwaway_workspace(
+    let root = one_chapter::with_stubs(
         "check-limits",
         "pub fn slope(p0: (f64, f64), p1: (f64, f64)) -> f64 {\n\
          \x20   let mut visits = Vec::new();\n\
@@ -345,7 +266,7 @@ fn memory_and_output_floods_are_stopped_at_their_limits() {
 fn nothing_a_test_started_outlives_the_check() {
     // A sleep no other process runs: 4000.25 s.
     let marker = "4000.25";
-    let root = throwaway_workspace(
+    let root = one_chapter::with_stubs(
         "check-forks",
         &format!(
             "pub fn slope(p0: (f64, f64), p1: (f64, f64)) -> f64 {{\n\
@@ -353,7 +274,7 @@ fn nothing_a_test_started_outlives_the_check() {
              \x20   (p1.1 - p0.1) / (p1.0 - p0.0)\n\
              }}\n"
         ),
-        NORMAL,
+        one_chapter::RIGHT_NORMAL,
     );
     let (_, report, stderr) = check_throwaway(&root, &[]);
     assert!(

@@ -1,5 +1,5 @@
-//! A throwaway workspace for the student loop's tests (`watch`,
-//! `progress`): shaped like the real one as far as `raystep check` looks
+//! A throwaway workspace for the tests of `check` and of the student
+//! loop (`watch`, `progress`): shaped like the real one as far as `raystep check` looks
 //! (chapter 1's package and exercise names), with one chapter that
 //! compiles in seconds, so that no test writes into the real workspace.
 #![allow(dead_code)]
@@ -28,6 +28,12 @@ pub const LOOPING_SLOPE: &str = "pub fn slope(p0: (f64, f64), p1: (f64, f64)) \
     \x20   }\n\
     }\n";
 
+/// `plane_through_points`, right.
+pub const RIGHT_NORMAL: &str = "pub fn normal_z(a: (f64, f64), b: (f64, f64)) \
+    -> f64 {\n\
+    \x20   a.0 * b.1 - a.1 * b.0\n\
+    }\n";
+
 /// Writes `text` to `path` unless it holds it already (cargo rebuilds what
 /// has a newer modification time).
 fn write(path: &Path, text: &str) {
@@ -48,6 +54,13 @@ pub fn chapter(root: &Path) -> PathBuf {
 /// `.raystep/`). Its target folder, `<root>/target`, is kept between
 /// runs.
 pub fn workspace(name: &str, slope: &str) -> PathBuf {
+    with_stubs(name, slope, RIGHT_NORMAL)
+}
+
+/// [`workspace`] with the stubs `line` (of `slope`) and `plane` (of
+/// `normal_z`); the reference bodies are right, and the library has one
+/// unit test of its own.
+pub fn with_stubs(name: &str, line: &str, plane: &str) -> PathBuf {
     let root = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
     let chapter = chapter(&root);
     let _ = fs::remove_dir_all(root.join(".raystep"));
@@ -74,15 +87,17 @@ pub fn workspace(name: &str, slope: &str) -> PathBuf {
          #[cfg_attr(feature = \"exercise\", path = \"../exercise/plane_through_points.rs\")]\n\
          mod plane_through_points;\n\n\
          pub use line_through_points::slope;\n\
-         pub use plane_through_points::normal_z;\n",
+         pub use plane_through_points::normal_z;\n\n\
+         #[cfg(test)]\n\
+         mod tests {\n\
+         \x20   #[test]\n\
+         \x20   fn a_unit_test() {}\n\
+         }\n",
     );
     write(&chapter.join("src/line_through_points.rs"), RIGHT_SLOPE);
-    write(&chapter.join("exercise/line_through_points.rs"), slope);
-    let normal = "pub fn normal_z(a: (f64, f64), b: (f64, f64)) -> f64 {\n\
-                  \x20   a.0 * b.1 - a.1 * b.0\n\
-                  }\n";
-    write(&chapter.join("src/plane_through_points.rs"), normal);
-    write(&chapter.join("exercise/plane_through_points.rs"), normal);
+    write(&chapter.join("exercise/line_through_points.rs"), line);
+    write(&chapter.join("src/plane_through_points.rs"), RIGHT_NORMAL);
+    write(&chapter.join("exercise/plane_through_points.rs"), plane);
     write(
         &chapter.join("tests/line_through_points.rs"),
         "#[test]\n\
