@@ -22,6 +22,8 @@
 //!   (AVX2); step 9: shadow rays take the children unsorted.
 //! - Step 10 ([`pairs512`]): a leaf's two blocks tested at once in the
 //!   eight lanes of AVX-512, where the CPU has it.
+//! - Step 11 ([`short_path`]): a walk with less between one node's load
+//!   and the next.
 //!
 //! The appendix has no exercises: it is written for engineers, after the
 //! lecture.
@@ -38,6 +40,8 @@ pub mod parallel_build;
 mod prefetch;
 pub mod ray;
 pub mod rotations;
+#[cfg(target_arch = "x86_64")]
+pub mod short_path;
 #[cfg(target_arch = "x86_64")]
 pub mod simd4;
 #[cfg(target_arch = "x86_64")]

@@ -128,12 +128,19 @@ pub enum Step {
     /// of AVX-512 (where the CPU has it).
     #[value(name = "bvh8-avx512-pairs")]
     Wide8Pairs512,
+    /// Step 11: step 9 with a walk whose critical path is shorter.
+    ///
+    /// 11: 9, walked with less between one node's load and the next: the
+    /// exit planes' widening folded into the ray, the planes chosen once
+    /// per ray, one and two children met taken by their own branches.
+    #[value(name = "bvh8-short-path")]
+    Wide8ShortPath,
 }
 
 impl Step {
     /// Every step, in order: the list [`clap::ValueEnum`] derives from
     /// the declaration above (a test holds the two equal).
-    pub const ALL: [Step; 19] = [
+    pub const ALL: [Step; 20] = [
         Step::Ordered,
         Step::LeafLayout,
         Step::SweepTree,
@@ -153,6 +160,7 @@ impl Step {
         Step::Compressed8Leaf4,
         Step::Wide8AnyUnsorted,
         Step::Wide8Pairs512,
+        Step::Wide8ShortPath,
     ];
 
     /// The name tables and the command line use: its `#[value(name)]`.
@@ -189,6 +197,8 @@ pub enum Kernel {
     /// AVX-512 and AVX2, where the CPU has both: step 10's, the walk
     /// `Avx2`'s, a leaf's two blocks tested at once with AVX-512.
     Avx512,
+    /// AVX2, step 11's walk (where the tree is no deeper than it takes).
+    ShortPath,
 }
 
 /// The structure a step builds.
@@ -266,7 +276,10 @@ impl FastBvh {
                 let wide: Wide<8> = Wide::new(triangles, tree, single);
                 Built::Wide8(wide.with_lanes(), kernel)
             }
-            Step::Wide8Leaf4 | Step::Wide8AnyUnsorted | Step::Wide8Pairs512 => {
+            Step::Wide8Leaf4
+            | Step::Wide8AnyUnsorted
+            | Step::Wide8Pairs512
+            | Step::Wide8ShortPath => {
                 let mut kernel = if avx2() {
                     Kernel::Avx2
                 } else if avx() {
@@ -281,6 +294,9 @@ impl FastBvh {
                 };
                 if step == Step::Wide8Pairs512 && wide.in_pairs() {
                     kernel = Kernel::Avx512;
+                }
+                if step == Step::Wide8ShortPath && short_path(&wide) {
+                    kernel = Kernel::ShortPath;
                 }
                 Built::Wide8(wide, kernel)
             }
@@ -340,6 +356,15 @@ impl FastBvh {
         }
     }
 
+    /// How many nodes deep an 8-wide tree of boxes is (`None` for the
+    /// other structures).
+    pub fn depth(&self) -> Option<usize> {
+        match &self.built {
+            Built::Wide8(w, _) => Some(w.depth()),
+            _ => None,
+        }
+    }
+
     /// Nodes, and the bytes of one node.
     pub fn nodes(&self) -> (usize, usize) {
         match &self.built {
@@ -392,6 +417,14 @@ impl FastBvh {
                 // Avx512 only where `pairs512::available()` did (AVX2
                 // with AVX-512).
                 unsafe { simd8::trace_avx2::<ANY>(w, ray, interval, counts) }
+            }
+            #[cfg(target_arch = "x86_64")]
+            Built::Wide8(w, Kernel::ShortPath) => {
+                // SAFETY: the kernel is ShortPath only where
+                // `short_path()` said so.
+                unsafe {
+                    crate::short_path::trace::<ANY>(w, ray, interval, counts)
+                }
             }
             #[cfg(target_arch = "x86_64")]
             Built::Wide8(w, _) => {
@@ -456,6 +489,20 @@ fn avx2() -> bool {
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
+        false
+    }
+}
+
+/// Does step 11's walk take `tree` on this CPU (AVX2, and a tree no
+/// deeper than its array allows)?
+fn short_path(tree: &Wide<8>) -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        crate::short_path::takes(tree)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let _ = tree;
         false
     }
 }

@@ -48,9 +48,9 @@ impl<const W: usize> Links for WideNode<W> {
 /// enters its box.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct Entry {
-    child: u32,
-    count: u32,
-    t: f32,
+    pub(crate) child: u32,
+    pub(crate) count: u32,
+    pub(crate) t: f32,
 }
 
 /// A wide BVH over a triangle mesh, its nodes of type `N` (plain boxes,
@@ -59,8 +59,8 @@ pub(crate) struct Entry {
 pub struct Wide<const W: usize, N = WideNode<W>> {
     pub(crate) nodes: Vec<N>,
     /// The root as a child: a node, or a leaf if the tree is one leaf.
-    root: Option<Entry>,
-    leaves: Leaves,
+    pub(crate) root: Option<Entry>,
+    pub(crate) leaves: Leaves,
     /// Step 9: an any-hit walk takes the children hit in the node's
     /// order, without sorting them by distance.
     unordered_any: bool,
@@ -135,6 +135,26 @@ impl<const W: usize> Wide<W> {
     pub fn unordered_any(mut self) -> Self {
         self.unordered_any = true;
         self
+    }
+
+    /// How many nodes deep the tree is (0: no node, or a leaf alone).
+    pub fn depth(&self) -> usize {
+        let mut deepest = 0;
+        let mut stack = match self.root {
+            Some(root) if root.count == 0 => vec![(root.child, 1)],
+            _ => vec![],
+        };
+        while let Some((k, depth)) = stack.pop() {
+            deepest = deepest.max(depth);
+            let node = &self.nodes[k as usize];
+            for i in 0..W {
+                // An interior child (an empty slot's box is empty).
+                if node.count[i] == 0 && node.lo[0][i] <= node.hi[0][i] {
+                    stack.push((node.child[i], depth + 1));
+                }
+            }
+        }
+        deepest
     }
 
     /// The same tree with each node turned into `f(node)`.
@@ -278,20 +298,25 @@ impl<const W: usize, N: Links> Wide<W, N> {
                 continue;
             };
             for e in others {
-                // Step 5: a waiting node's memory asked for now, used
-                // later (step 8: a waiting leaf's blocks too).
-                #[cfg(target_arch = "x86_64")]
-                if e.count == 0 {
-                    crate::prefetch::prefetch(&self.nodes[e.child as usize]);
-                } else if let Some(blocks) = &self.leaves.blocks {
-                    blocks.prefetch((e.child, e.count));
-                }
+                self.prefetch(e);
                 stack.push(*e);
             }
             next = Some(*nearest);
         }
         // ANCHOR_END: wide_walk
         closest
+    }
+
+    /// Step 5: a waiting node's memory asked for now, used later (step 8:
+    /// a waiting leaf's blocks too).
+    #[inline(always)]
+    pub(crate) fn prefetch(&self, e: &Entry) {
+        #[cfg(target_arch = "x86_64")]
+        if e.count == 0 {
+            crate::prefetch::prefetch(&self.nodes[e.child as usize]);
+        } else if let Some(blocks) = &self.leaves.blocks {
+            blocks.prefetch((e.child, e.count));
+        }
     }
 
     /// The closest hit (or, `ANY`, the first found), boxes tested by

@@ -10,7 +10,8 @@ use common::{Truth, rays, truth, wrong};
 use raystep_bench::bunny;
 
 use ch08::{
-    Builder, Bvh, Interval, MeshAccelerator, Ray32, TraceCounts, triangle_boxes,
+    Aabb, Builder, Bvh, BvhNode, Interval, MeshAccelerator, Ray32, TraceCounts,
+    triangle_boxes,
 };
 use ch11::{FastBvh, Step};
 use raystep_core::DVec3;
@@ -120,4 +121,77 @@ fn a_deep_tree_and_tiny_scenes_work() {
             assert_eq!(wrong, (0, 0), "{}", step.name());
         }
     }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[test]
+fn step_11_takes_the_bunny_and_leaves_a_deep_tree_to_step_9s_walk() {
+    // its walk's array holds the waiting children of a tree at most
+    // MAX_DEPTH nodes deep; a deeper tree keeps step 9's walk
+    use ch11::Kernel;
+    let avx2 = is_x86_feature_detected!("avx2");
+    let bunny = FastBvh::build(&bunny(), Step::Wide8ShortPath);
+    assert_eq!(bunny.kernel() == Kernel::ShortPath, avx2);
+    // a chain made by hand, each node a sliver and the rest: 600 deep
+    let slivers: Vec<[DVec3; 3]> = (0..600)
+        .map(|k| {
+            let x = f64::from(k) / 600.0;
+            [(-1.0, -1.0), (1.0, -1.0), (0.0, 1.0)]
+                .map(|(y, z)| DVec3::new(x, y, z))
+        })
+        .collect();
+    let boxes = triangle_boxes(&slivers);
+    let mut nodes = vec![BvhNode {
+        bounds: Aabb::EMPTY,
+        first: 0,
+        count: 0,
+    }];
+    for k in 0..slivers.len() as u32 - 1 {
+        let (at, children) = (nodes.len() - 1, nodes.len() as u32);
+        nodes[at] = BvhNode {
+            bounds: Aabb::EMPTY,
+            first: children,
+            count: 0,
+        };
+        nodes.push(BvhNode {
+            bounds: boxes[k as usize],
+            first: k,
+            count: 1,
+        });
+        nodes.push(BvhNode {
+            bounds: Aabb::EMPTY,
+            first: k + 1,
+            count: 1,
+        });
+    }
+    let last = nodes.len() - 1;
+    nodes[last].bounds = boxes[slivers.len() - 1];
+    for k in (0..nodes.len()).rev() {
+        if nodes[k].count == 0 {
+            let first = nodes[k].first as usize;
+            nodes[k].bounds =
+                nodes[first].bounds.union(nodes[first + 1].bounds);
+        }
+    }
+    let tree = Bvh {
+        nodes,
+        order: (0..slivers.len() as u32).collect(),
+        unbounded: Vec::new(),
+    };
+    let deep = FastBvh::from_tree(&slivers, &tree, Step::Wide8ShortPath);
+    assert!(
+        deep.depth()
+            .is_some_and(|d| d > ch11::short_path::MAX_DEPTH)
+    );
+    assert_ne!(deep.kernel(), Kernel::ShortPath);
+    let rays: Vec<Ray32> = (0..400)
+        .map(|k| Ray32 {
+            origin: Vec3::new(2.0, -0.99 + 0.00495 * k as f32, -0.3),
+            direction: -Vec3::X,
+        })
+        .collect();
+    let truth = truth(&slivers, &rays);
+    let hits = truth.closest.iter().flatten().count();
+    assert!(hits > 200, "{hits} of the rays hit");
+    assert_eq!(wrong(&deep, &rays, &truth), (0, 0));
 }

@@ -46,6 +46,7 @@ pub fn label(method: &Method) -> String {
                 Step::Compressed8Leaf4 => "8b",
                 Step::Wide8AnyUnsorted => "9",
                 Step::Wide8Pairs512 => "10",
+                Step::Wide8ShortPath => "11",
             };
             format!("{number} {}", step.name())
         }

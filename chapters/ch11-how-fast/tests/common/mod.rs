@@ -95,7 +95,12 @@ pub fn agree(a: Option<MeshHit>, b: Option<MeshHit>) -> bool {
 /// 300 slivers, each 0.9 times the last, along x: the SAH peels them
 /// off one by one, a tree about 300 deep.
 pub fn slivers() -> Vec<[DVec3; 3]> {
-    (0..300)
+    slivers_of(300)
+}
+
+/// `n` slivers, as [`slivers`].
+pub fn slivers_of(n: i32) -> Vec<[DVec3; 3]> {
+    (0..n)
         .map(|k| {
             let x = 0.9f64.powi(k);
             [
