@@ -293,7 +293,11 @@ impl Blocks4 {
         let lanes = usize::from(self.lanes[b]);
         counts.triangles += lanes as u64;
         let mut found = false;
-        for lane in 0..lanes {
+        // Only the lanes hit or unsure, in order (most blocks: none).
+        let mut left = (tested.hit | tested.unsure) & ((1 << lanes) - 1);
+        while left != 0 {
+            let lane = left.trailing_zeros() as usize;
+            left &= left - 1;
             let t = match tested.lane(lane) {
                 Lane::Miss => continue,
                 Lane::Unsure => {
