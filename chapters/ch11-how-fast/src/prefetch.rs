@@ -17,5 +17,10 @@ pub fn prefetch<T>(value: &T) {
         for line in (0..size_of::<T>()).step_by(64) {
             _mm_prefetch::<_MM_HINT_T0>(p.wrapping_add(line));
         }
+        // and the last byte's line (a value not aligned to a line, as a
+        // block of four triangles, 160 bytes, can end in a fourth line)
+        if size_of::<T>() % 64 != 0 {
+            _mm_prefetch::<_MM_HINT_T0>(p.wrapping_add(size_of::<T>() - 1));
+        }
     }
 }

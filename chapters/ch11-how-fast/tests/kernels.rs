@@ -419,6 +419,7 @@ fn four_at_once(
     let lane = case % 4;
     let mut block = Triangle4 {
         rows: [[[0.0; 4]; 3]; 3],
+        ids: [0, 1, 2, 3],
     };
     let mut k = 0;
     for i in 0..4 {
