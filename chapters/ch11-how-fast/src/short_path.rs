@@ -229,6 +229,18 @@ pub fn trace<const ANY: bool>(
             let (near, mut mask) =
                 unsafe { boxes(node, &far_ray, t_min, t_max) };
             if mask != 0 {
+                let i = mask.trailing_zeros() as usize;
+                mask &= mask - 1;
+                if mask == 0 {
+                    // One child met: straight on, no stack (and no need
+                    // of its entry t, which only a waiting child needs).
+                    entry = Entry {
+                        child: node.child[i],
+                        count: node.count[i],
+                        t: 0.0,
+                    };
+                    continue;
+                }
                 let mut t = [0.0; 8];
                 // SAFETY: AVX; eight f32s into a [f32; 8].
                 unsafe { _mm256_storeu_ps(t.as_mut_ptr(), near) };
@@ -237,13 +249,7 @@ pub fn trace<const ANY: bool>(
                     count: node.count[i],
                     t: t[i],
                 };
-                let first = child(mask.trailing_zeros() as usize);
-                mask &= mask - 1;
-                if mask == 0 {
-                    // One child met: straight on, no stack.
-                    entry = first;
-                    continue;
-                }
+                let first = child(i);
                 let second = child(mask.trailing_zeros() as usize);
                 mask &= mask - 1;
                 if mask == 0 {
