@@ -19,7 +19,7 @@ pub fn prefetch<T>(value: &T) {
         }
         // and the last byte's line (a value not aligned to a line, as a
         // block of four triangles, 160 bytes, can end in a fourth line)
-        if size_of::<T>() % 64 != 0 {
+        if !size_of::<T>().is_multiple_of(64) {
             _mm_prefetch::<_MM_HINT_T0>(p.wrapping_add(size_of::<T>() - 1));
         }
     }
