@@ -40,7 +40,6 @@ pub fn takes(tree: &Wide<8>) -> bool {
     is_x86_feature_detected!("avx2") && tree.depth() <= MAX_DEPTH
 }
 
-// ANCHOR: far_ray
 /// The ray as the walk's box test takes it, computed once per ray.
 ///
 /// The exit plane's distance is `(exit − o) × (1/d × WIDEN)` instead of
@@ -57,7 +56,6 @@ struct FarRay {
     enter: [usize; 3],
     exit: [usize; 3],
 }
-// ANCHOR_END: far_ray
 
 impl FarRay {
     /// # Safety

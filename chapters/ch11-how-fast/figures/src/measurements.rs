@@ -56,13 +56,14 @@ pub fn label(method: &Method) -> String {
 }
 
 /// The steps measured on two threads too: 7a and 7b (tracing, and the
-/// build on the pool's threads), and the fastest on one thread, 8b and
-/// 9 (tracing; their build stays on one).
-const THREADED: [Step; 4] = [
+/// build on the pool's threads), and the fastest on one thread, 8b, 9
+/// and 11 (tracing; their build stays on one).
+const THREADED: [Step; 5] = [
     Step::Wide8Parallel,
     Step::Compressed8Parallel,
     Step::Compressed8Leaf4,
     Step::Wide8AnyUnsorted,
+    Step::Wide8ShortPath,
 ];
 
 /// The mesh's triangles; an error names the file.
