@@ -146,6 +146,39 @@ fn every_builder_agrees_with_brute_force_on_mixed_scenes() {
     assert!(total >= 54_000);
 }
 
+/// `Bvh::build_with_leaves_of`: no node of at most that many objects is
+/// split, the tree still answers as brute force, and with 1 it is the
+/// tree `Bvh::build` gives.
+#[test]
+fn small_nodes_stay_leaves_when_asked() {
+    let objects = jumble(300, DVec3::ZERO, 4);
+    let boxes: Vec<Aabb> = objects.iter().map(|o| o.shape.bounds()).collect();
+    let rays = rays_through(&objects, 2000, 14);
+    for builder in [
+        Builder::BinnedSah { bins: 16 },
+        Builder::SweepSah,
+        Builder::Median,
+    ] {
+        let full = Bvh::build(&boxes, builder);
+        assert_eq!(Bvh::build_with_leaves_of(&boxes, builder, 1), full);
+        let bvh = Bvh::build_with_leaves_of(&boxes, builder, 8);
+        // objects below each node (children come after their parent)
+        let mut below = vec![0; bvh.nodes.len()];
+        for k in (0..bvh.nodes.len()).rev() {
+            let n = bvh.nodes[k];
+            below[k] = match n.is_leaf() {
+                true => n.count,
+                false => below[n.first as usize] + below[n.first as usize + 1],
+            };
+            assert!(n.is_leaf() || below[k] > 8, "{}", builder.name());
+        }
+        assert_eq!(below[0] as usize, boxes.len() - bvh.unbounded.len());
+        assert!(bvh.nodes.len() < full.nodes.len(), "{}", builder.name());
+        let wrong = disagreements(&bvh, &objects, &rays);
+        assert_eq!(wrong, 0, "{}", builder.name());
+    }
+}
+
 /// No objects, one, all centroids equal, all in one plane, and rays with
 /// NaN or infinite components: no panic, brute force's answers.
 #[test]

@@ -17,7 +17,23 @@ impl Bvh {
         match builder {
             Builder::Agglomerative => agglomerative(boxes),
             Builder::Ploc { radius } => ploc(boxes, radius),
-            rule => top_down(boxes, rule),
+            rule => top_down(boxes, rule, 1),
+        }
+    }
+
+    /// [`Bvh::build`] with a top-down `builder`, but a node of at most
+    /// `leaf` objects kept as a leaf without being split: for leaves
+    /// tested several objects at once (the appendix's blocks of four
+    /// triangles), whose cost the SAH's one-test-per-object does not
+    /// know. The bottom-up builders build as [`Bvh::build`] does.
+    pub fn build_with_leaves_of(
+        boxes: &[Aabb], builder: Builder, leaf: usize,
+    ) -> Bvh {
+        match builder {
+            Builder::Agglomerative | Builder::Ploc { .. } => {
+                Bvh::build(boxes, builder)
+            }
+            rule => top_down(boxes, rule, leaf.max(1)),
         }
     }
 

@@ -34,7 +34,10 @@ struct Split {
     sides: [(Box32, Box32); 2],
 }
 
-pub(crate) fn top_down(boxes: &[Aabb], builder: Builder) -> Bvh {
+/// The tree over `boxes`, split by `builder`; a node of at most `leaf`
+/// objects is a leaf without asking (1: every node is split while the
+/// SAH says a split is cheaper).
+pub(crate) fn top_down(boxes: &[Aabb], builder: Builder, leaf: usize) -> Bvh {
     // Step 1: objects with a finite box go into the tree, the rest
     // (planes, empty boxes) are asked by every ray.
     let (order, unbounded) = bounded_objects(boxes);
@@ -64,6 +67,9 @@ pub(crate) fn top_down(boxes: &[Aabb], builder: Builder) -> Bvh {
     while let Some(task) = stack.pop() {
         let node = nodes[task.node];
         let (first, count) = (node.first as usize, node.count as usize);
+        if count <= leaf {
+            continue; // small enough to stay a leaf
+        }
         let objects = &mut items[first..first + count];
         let Some(split) = choose(builder, objects, &task, &mut bins) else {
             continue; // one object
