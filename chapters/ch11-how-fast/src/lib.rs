@@ -24,6 +24,8 @@
 //!   eight lanes of AVX-512, where the CPU has it.
 //! - Step 11 ([`short_path`]): a walk with less between one node's load
 //!   and the next.
+//! - Step 12: the tree not split below eight triangles (two blocks), for
+//!   a shorter build (chapter 8's `Bvh::build_with_leaves_of`).
 //!
 //! The appendix has no exercises: it is written for engineers, after the
 //! lecture.

@@ -135,12 +135,18 @@ pub enum Step {
     /// per ray, one and two children met taken by their own branches.
     #[value(name = "bvh8-short-path")]
     Wide8ShortPath,
+    /// Step 12: step 11, its tree not split below eight triangles.
+    ///
+    /// 12: 11, its tree not split below eight triangles (two blocks:
+    /// step 8 merges most such subtrees anyway): a shorter build.
+    #[value(name = "bvh8-block-build")]
+    Wide8BlockBuild,
 }
 
 impl Step {
     /// Every step, in order: the list [`clap::ValueEnum`] derives from
     /// the declaration above (a test holds the two equal).
-    pub const ALL: [Step; 20] = [
+    pub const ALL: [Step; 21] = [
         Step::Ordered,
         Step::LeafLayout,
         Step::SweepTree,
@@ -161,6 +167,7 @@ impl Step {
         Step::Wide8AnyUnsorted,
         Step::Wide8Pairs512,
         Step::Wide8ShortPath,
+        Step::Wide8BlockBuild,
     ];
 
     /// The name tables and the command line use: its `#[value(name)]`.
@@ -230,6 +237,10 @@ impl FastBvh {
             Step::Wide8Parallel | Step::Compressed8Parallel => {
                 crate::parallel_build::build_parallel(&boxes, 16)
             }
+            // Step 12: no node of eight triangles or fewer is split.
+            Step::Wide8BlockBuild => {
+                Bvh::build_with_leaves_of(&boxes, step.builder(), 8)
+            }
             _ => Bvh::build(&boxes, step.builder()),
         };
         FastBvh::from_tree(triangles, &tree, step)
@@ -279,7 +290,8 @@ impl FastBvh {
             Step::Wide8Leaf4
             | Step::Wide8AnyUnsorted
             | Step::Wide8Pairs512
-            | Step::Wide8ShortPath => {
+            | Step::Wide8ShortPath
+            | Step::Wide8BlockBuild => {
                 let mut kernel = if avx2() {
                     Kernel::Avx2
                 } else if avx() {
@@ -295,7 +307,11 @@ impl FastBvh {
                 if step == Step::Wide8Pairs512 && wide.in_pairs() {
                     kernel = Kernel::Avx512;
                 }
-                if step == Step::Wide8ShortPath && short_path(&wide) {
+                let short = matches!(
+                    step,
+                    Step::Wide8ShortPath | Step::Wide8BlockBuild
+                );
+                if short && short_path(&wide) {
                     kernel = Kernel::ShortPath;
                 }
                 Built::Wide8(wide, kernel)

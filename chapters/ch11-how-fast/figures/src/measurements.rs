@@ -47,6 +47,7 @@ pub fn label(method: &Method) -> String {
                 Step::Wide8AnyUnsorted => "9",
                 Step::Wide8Pairs512 => "10",
                 Step::Wide8ShortPath => "11",
+                Step::Wide8BlockBuild => "12",
             };
             format!("{number} {}", step.name())
         }
