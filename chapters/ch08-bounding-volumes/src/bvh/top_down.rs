@@ -64,12 +64,14 @@ pub(crate) fn top_down(boxes: &[Aabb], builder: Builder, leaf: usize) -> Bvh {
         bounds,
         centroids,
     }];
+    // ANCHOR: leaf_stop
     while let Some(task) = stack.pop() {
         let node = nodes[task.node];
         let (first, count) = (node.first as usize, node.count as usize);
         if count <= leaf {
             continue; // small enough to stay a leaf
         }
+        // ANCHOR_END: leaf_stop
         let objects = &mut items[first..first + count];
         let Some(split) = choose(builder, objects, &task, &mut bins) else {
             continue; // one object
