@@ -302,9 +302,10 @@ impl Bins {
         // Step 3: the children's boxes come from the bins.
         let (_, axis, cut, l, r) = best?;
         // Step 4: the partition, which measures the centroids on the way.
-        // An object goes left when its bin is at most `cut`, that is when
-        // its scaled centroid is below `cut + 1` (the same operations as
-        // `bin_of`'s, on the one axis, so the same sides as the bins').
+        // An object goes left when its bin is at most `cut`, that is
+        // unless its scaled centroid is at least `cut + 1` (the same
+        // operations as `bin_of`'s, on the one axis, so the same sides as
+        // the bins').
         let cut = Cut {
             min: c.min[axis],
             scale: scale[axis],
@@ -325,7 +326,7 @@ impl Bins {
 
 // ANCHOR: partition
 /// A binned SAH's cut on one axis: an object goes left when
-/// `(2·centroid − min) · scale < below`.
+/// `(2·centroid − min) · scale < below`, or is NaN.
 #[derive(Clone, Copy)]
 struct Cut {
     min: f32,
@@ -340,8 +341,12 @@ struct Cut {
 fn partition_measured<const AXIS: usize>(
     objects: &mut [Item], cut: Cut,
 ) -> (usize, Box32, Box32) {
+    // (a NaN goes left too: where the scale is infinite, a centroid on
+    // the box's side gives 0·∞, which `bin_of` puts in bin 0; sent right,
+    // it could leave a side empty)
     let left = |item: &Item| {
-        (item.centroid2()[AXIS] - cut.min) * cut.scale < cut.below
+        let x = (item.centroid2()[AXIS] - cut.min) * cut.scale;
+        x < cut.below || x.is_nan()
     };
     let (mut lc, mut rc) = (Box32::EMPTY, Box32::EMPTY);
     let (mut i, mut j) = (0, objects.len());
@@ -455,5 +460,27 @@ mod tests {
         assert_eq!(left, want);
         assert!(objects[..left].iter().all(|o| o.centroid2().x < on_cut));
         assert!(objects[left..].iter().all(|o| o.centroid2().x >= on_cut));
+    }
+
+    #[test]
+    fn a_centroid_the_scale_makes_nan_goes_left_as_its_bin() {
+        // An infinite scale (a centroids' box thinner than f32 can divide
+        // by): the centroid on the box's side gives 0·∞. `bin_of` clamps
+        // the NaN to bin 0, so the partition must keep it left.
+        let boxes = scattered(50);
+        let order: Vec<u32> = (0..boxes.len() as u32).collect();
+        let mut objects = items(&boxes, &order);
+        let lowest = objects
+            .iter()
+            .map(|o| o.centroid2().x)
+            .fold(f32::INFINITY, f32::min);
+        let cut = Cut {
+            min: lowest,
+            scale: f32::INFINITY,
+            below: 1.0,
+        };
+        let (left, ..) = partition_measured::<0>(&mut objects, cut);
+        assert_eq!(left, 1, "only the lowest centroid is in bin 0");
+        assert_eq!(objects[0].centroid2().x, lowest);
     }
 }
