@@ -168,8 +168,12 @@ fn choose(
             Builder::SweepSah => sweep_sah(objects).unwrap_or(half),
             Builder::Midpoint => {
                 let middle = 0.5 * (c.min[axis] + c.max[axis]);
-                let left =
-                    partition(objects, |item| item.centroid2()[axis] < middle);
+                let middle = Cut {
+                    min: 0.0,
+                    scale: 1.0,
+                    below: middle,
+                };
+                let (left, ..) = partition_on(objects, axis, middle);
                 if left == 0 || left == objects.len() {
                     objects.select_nth_unstable_by(half, by_axis);
                     half
@@ -211,8 +215,8 @@ struct Bin {
 ///   centroids' boxes from the partition pass (was: two more passes, then
 ///   two more for the children's leaves).
 ///
-/// And later, for the appendix's step 12 (its build of the big bunny, one
-/// bench run each: 108 → 85 ms): step 4 compares one coordinate with the
+/// And later, for the appendix's step 12 (its build of the big bunny,
+/// four bench runs each, taking turns: 97–111 → 81–83 ms): step 4 compares one coordinate with the
 /// cut instead of computing three bins, swaps only the pairs found on the
 /// wrong sides from both ends (was: every object bound right, with the
 /// last unexamined one), and runs in a function of its own for each axis
@@ -311,11 +315,7 @@ impl Bins {
             scale: scale[axis],
             below: (cut + 1) as f32,
         };
-        let (i, lc, rc) = match axis {
-            0 => partition_measured::<0>(objects, cut),
-            1 => partition_measured::<1>(objects, cut),
-            _ => partition_measured::<2>(objects, cut),
-        };
+        let (i, lc, rc) = partition_on(objects, axis, cut);
         Some(Split {
             left: i,
             sides: [(l, lc), (r, rc)],
@@ -325,13 +325,24 @@ impl Bins {
 }
 
 // ANCHOR: partition
-/// A binned SAH's cut on one axis: an object goes left when
-/// `(2·centroid − min) · scale < below`, or is NaN.
+/// A cut on one axis (a binned SAH's, or the midpoint): an object goes
+/// left when `(2·centroid − min) · scale < below`, or is NaN.
 #[derive(Clone, Copy)]
 struct Cut {
     min: f32,
     scale: f32,
     below: f32,
+}
+
+/// [`partition_measured`] on `axis`, the axis a constant in each copy.
+fn partition_on(
+    objects: &mut [Item], axis: usize, cut: Cut,
+) -> (usize, Box32, Box32) {
+    match axis {
+        0 => partition_measured::<0>(objects, cut),
+        1 => partition_measured::<1>(objects, cut),
+        _ => partition_measured::<2>(objects, cut),
+    }
 }
 
 /// Moves the objects left of `cut` on axis `AXIS` to the front, from both
@@ -368,18 +379,6 @@ fn partition_measured<const AXIS: usize>(
     }
 }
 // ANCHOR_END: partition
-
-/// Moves the objects for which `left` holds to the front; how many.
-fn partition(objects: &mut [Item], left: impl Fn(&Item) -> bool) -> usize {
-    let mut next = 0;
-    for k in 0..objects.len() {
-        if left(&objects[k]) {
-            objects.swap(k, next);
-            next += 1;
-        }
-    }
-    next
-}
 
 #[cfg(test)]
 mod tests {
