@@ -12,6 +12,7 @@
 use ch08::{Bvh, BvhNode, MeshHit, PreparedRay, TraceCounts};
 use raystep_core::{DVec3, Interval};
 
+use crate::pages::Pages;
 use crate::ray::FastRay;
 
 /// A block's test against one node visit in the cost model of the merge:
@@ -145,7 +146,7 @@ impl Triangle4 {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Blocks4 {
     /// The blocks.
-    pub blocks: Vec<Triangle4>,
+    pub blocks: Pages<Triangle4>,
     /// How many lanes of each block hold a triangle (1 to 4).
     pub lanes: Vec<u8>,
     /// Tested with AVX2 (checked when built), else lane by lane.
@@ -167,8 +168,9 @@ impl Blocks4 {
         triangles: &[[DVec3; 3]], tree: &Bvh,
     ) -> Option<(Blocks4, BlockLinks)> {
         let exact = |x: f64| f64::from(x as f32) == x;
+        let mut blocks = Vec::new();
         let mut built = Blocks4 {
-            blocks: Vec::new(),
+            blocks: Pages::from(Vec::new()),
             lanes: Vec::new(),
             simd: avx2(),
             pairs: false,
@@ -187,7 +189,7 @@ impl Blocks4 {
                     crate::prefetch::prefetch(&triangles[id as usize]);
                 }
             }
-            let start = built.blocks.len() as u32;
+            let start = blocks.len() as u32;
             for chunk in tree.order[first..first + count].chunks(4) {
                 // An empty lane repeats the first triangle (and is never
                 // read: its id is none).
@@ -209,12 +211,13 @@ impl Blocks4 {
                         }
                     }
                 }
-                built.blocks.push(block);
+                blocks.push(block);
                 built.lanes.push(chunk.len() as u8);
             }
-            let end = built.blocks.len() as u32;
+            let end = blocks.len() as u32;
             links[first] = (start, end - start);
         }
+        built.blocks = blocks.into();
         Some((built, links))
     }
 
@@ -232,6 +235,13 @@ impl Blocks4 {
         for block in blocks {
             crate::prefetch::prefetch(block);
         }
+    }
+
+    /// Step 13: the same blocks, in 2 MB pages where the system gives
+    /// them ([`Pages::huge`]).
+    pub fn in_huge_pages(mut self) -> Blocks4 {
+        self.blocks = Pages::huge(&self.blocks);
+        self
     }
 
     /// Tested lane by lane whatever the CPU (for the tests that hold the

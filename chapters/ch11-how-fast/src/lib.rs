@@ -26,6 +26,7 @@
 //!   and the next.
 //! - Step 12: the tree not split below eight triangles (two blocks), for
 //!   a shorter build (chapter 8's `Bvh::build_with_leaves_of`).
+//! - Step 13 ([`pages`]): step 12's nodes and blocks in 2 MB pages.
 //!
 //! The appendix has no exercises: it is written for engineers, after the
 //! lecture.
@@ -35,6 +36,7 @@ pub mod binary;
 pub mod compressed;
 pub mod leaf4;
 pub mod leaf_triangles;
+pub mod pages;
 #[cfg(target_arch = "x86_64")]
 pub mod pairs512;
 pub mod parallel_build;

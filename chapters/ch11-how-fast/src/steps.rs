@@ -141,12 +141,19 @@ pub enum Step {
     /// step 8 merges most such subtrees anyway): a shorter build.
     #[value(name = "bvh8-block-build")]
     Wide8BlockBuild,
+    /// Step 13: step 12, its nodes and blocks in 2 MB pages.
+    ///
+    /// 13: 12, its nodes and blocks in 2 MB pages (where the system gives
+    /// them: Linux's transparent huge pages), so that a few TLB entries
+    /// cover the whole tree.
+    #[value(name = "bvh8-huge-pages")]
+    Wide8HugePages,
 }
 
 impl Step {
     /// Every step, in order: the list [`clap::ValueEnum`] derives from
     /// the declaration above (a test holds the two equal).
-    pub const ALL: [Step; 21] = [
+    pub const ALL: [Step; 22] = [
         Step::Ordered,
         Step::LeafLayout,
         Step::SweepTree,
@@ -168,6 +175,7 @@ impl Step {
         Step::Wide8Pairs512,
         Step::Wide8ShortPath,
         Step::Wide8BlockBuild,
+        Step::Wide8HugePages,
     ];
 
     /// The name tables and the command line use: its `#[value(name)]`.
@@ -238,7 +246,7 @@ impl FastBvh {
                 crate::parallel_build::build_parallel(&boxes, 16)
             }
             // Step 12: no node of eight triangles or fewer is split.
-            Step::Wide8BlockBuild => {
+            Step::Wide8BlockBuild | Step::Wide8HugePages => {
                 Bvh::build_with_leaves_of(&boxes, step.builder(), 8)
             }
             _ => Bvh::build(&boxes, step.builder()),
@@ -291,7 +299,8 @@ impl FastBvh {
             | Step::Wide8AnyUnsorted
             | Step::Wide8Pairs512
             | Step::Wide8ShortPath
-            | Step::Wide8BlockBuild => {
+            | Step::Wide8BlockBuild
+            | Step::Wide8HugePages => {
                 let mut kernel = if avx2() {
                     Kernel::Avx2
                 } else if avx() {
@@ -309,10 +318,16 @@ impl FastBvh {
                 }
                 let short = matches!(
                     step,
-                    Step::Wide8ShortPath | Step::Wide8BlockBuild
+                    Step::Wide8ShortPath
+                        | Step::Wide8BlockBuild
+                        | Step::Wide8HugePages
                 );
                 if short && short_path(&wide) {
                     kernel = Kernel::ShortPath;
+                }
+                // Step 13: the tree moved into 2 MB pages once built.
+                if step == Step::Wide8HugePages {
+                    wide = wide.in_huge_pages();
                 }
                 Built::Wide8(wide, kernel)
             }

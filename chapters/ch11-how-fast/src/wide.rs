@@ -8,6 +8,7 @@ use raystep_core::{DVec3, Interval};
 use smallvec::SmallVec;
 
 use crate::leaf_triangles::Leaves;
+use crate::pages::Pages;
 use crate::ray::{FastRay, span};
 
 // ANCHOR: wide_node
@@ -56,8 +57,8 @@ pub(crate) struct Entry {
 /// A wide BVH over a triangle mesh, its nodes of type `N` (plain boxes,
 /// or [`compressed`](crate::compressed) ones).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Wide<const W: usize, N = WideNode<W>> {
-    pub(crate) nodes: Vec<N>,
+pub struct Wide<const W: usize, N: Copy = WideNode<W>> {
+    pub(crate) nodes: Pages<N>,
     /// The root as a child: a node, or a leaf if the tree is one leaf.
     pub(crate) root: Option<Entry>,
     pub(crate) leaves: Leaves,
@@ -92,7 +93,7 @@ impl<const W: usize> Wide<W> {
             }
         });
         Wide {
-            nodes,
+            nodes: nodes.into(),
             root,
             leaves,
             unordered_any: false,
@@ -117,7 +118,7 @@ impl<const W: usize> Wide<W> {
             0 => (child, 0),
             _ => links[child as usize],
         };
-        for node in &mut self.nodes {
+        for node in self.nodes.iter_mut() {
             for i in 0..W {
                 (node.child[i], node.count[i]) =
                     relink((node.child[i], node.count[i]));
@@ -127,6 +128,14 @@ impl<const W: usize> Wide<W> {
             (root.child, root.count) = relink((root.child, root.count));
         }
         self.leaves.blocks = Some(blocks);
+        self
+    }
+
+    /// Step 13: the same tree, its nodes and blocks in 2 MB pages where
+    /// the system gives them ([`Pages::huge`]).
+    pub fn in_huge_pages(mut self) -> Self {
+        self.nodes = Pages::huge(&self.nodes);
+        self.leaves.blocks = self.leaves.blocks.map(|b| b.in_huge_pages());
         self
     }
 
@@ -158,9 +167,11 @@ impl<const W: usize> Wide<W> {
     }
 
     /// The same tree with each node turned into `f(node)`.
-    pub fn map_nodes<N>(self, f: impl Fn(&WideNode<W>) -> N) -> Wide<W, N> {
+    pub fn map_nodes<N: Copy>(
+        self, f: impl Fn(&WideNode<W>) -> N,
+    ) -> Wide<W, N> {
         Wide {
-            nodes: self.nodes.iter().map(f).collect(),
+            nodes: self.nodes.iter().map(f).collect::<Vec<N>>().into(),
             root: self.root,
             leaves: self.leaves,
             unordered_any: self.unordered_any,
@@ -168,7 +179,7 @@ impl<const W: usize> Wide<W> {
     }
 }
 
-impl<const W: usize, N: Links> Wide<W, N> {
+impl<const W: usize, N: Links + Copy> Wide<W, N> {
     /// How many wide nodes.
     pub fn node_count(&self) -> usize {
         self.nodes.len()

@@ -48,6 +48,7 @@ pub fn label(method: &Method) -> String {
                 Step::Wide8Pairs512 => "10",
                 Step::Wide8ShortPath => "11",
                 Step::Wide8BlockBuild => "12",
+                Step::Wide8HugePages => "13",
             };
             format!("{number} {}", step.name())
         }
