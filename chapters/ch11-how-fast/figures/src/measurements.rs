@@ -58,14 +58,15 @@ pub fn label(method: &Method) -> String {
 }
 
 /// The steps measured on two threads too: 7a and 7b (tracing, and the
-/// build on the pool's threads), and the fastest on one thread, 8b, 9
-/// and 11 (tracing; their build stays on one).
-const THREADED: [Step; 5] = [
+/// build on the pool's threads), and the fastest on one thread, 8b, 9,
+/// 11 and 13 (tracing; their build stays on one).
+const THREADED: [Step; 6] = [
     Step::Wide8Parallel,
     Step::Compressed8Parallel,
     Step::Compressed8Leaf4,
     Step::Wide8AnyUnsorted,
     Step::Wide8ShortPath,
+    Step::Wide8HugePages,
 ];
 
 /// The mesh's triangles; an error names the file.
