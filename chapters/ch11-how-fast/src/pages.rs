@@ -115,13 +115,13 @@ impl<T: Copy> Pages<T> {
             },
         })
     }
-    // ANCHOR_END: huge
 
     /// Are they in a mapping of their own (asked for in 2 MB pages)?
     pub fn is_mapped(&self) -> bool {
         !matches!(self.storage, Storage::Heap(_))
     }
 }
+// ANCHOR_END: huge
 
 impl<T: Copy> Deref for Pages<T> {
     type Target = [T];
