@@ -168,13 +168,7 @@ impl Blocks4 {
         triangles: &[[DVec3; 3]], tree: &Bvh,
     ) -> Option<(Blocks4, BlockLinks)> {
         let exact = |x: f64| f64::from(x as f32) == x;
-        let mut blocks = Vec::new();
-        let mut built = Blocks4 {
-            blocks: Pages::from(Vec::new()),
-            lanes: Vec::new(),
-            simd: avx2(),
-            pairs: false,
-        };
+        let (mut blocks, mut lanes) = (Vec::new(), Vec::new());
         let mut links = vec![(0, 0); tree.order.len()];
         let leaves: Vec<(usize, usize)> = (tree.nodes.iter())
             .filter(|n| n.is_leaf())
@@ -212,12 +206,17 @@ impl Blocks4 {
                     }
                 }
                 blocks.push(block);
-                built.lanes.push(chunk.len() as u8);
+                lanes.push(chunk.len() as u8);
             }
             let end = blocks.len() as u32;
             links[first] = (start, end - start);
         }
-        built.blocks = blocks.into();
+        let built = Blocks4 {
+            blocks: blocks.into(),
+            lanes,
+            simd: avx2(),
+            pairs: false,
+        };
         Some((built, links))
     }
 

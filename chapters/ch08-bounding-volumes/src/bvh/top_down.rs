@@ -216,11 +216,12 @@ struct Bin {
 ///   two more for the children's leaves).
 ///
 /// And later, for the appendix's step 12 (its build of the big bunny,
-/// four bench runs each, taking turns: 97–111 → 81–83 ms): step 4 compares one coordinate with the
-/// cut instead of computing three bins, swaps only the pairs found on the
-/// wrong sides from both ends (was: every object bound right, with the
-/// last unexamined one), and runs in a function of its own for each axis
-/// (the axis a constant; inlined, its two boxes lived on the stack).
+/// four bench runs each, taking turns: 97–111 → 81–83 ms): step 4
+/// compares one coordinate with the cut instead of computing three bins,
+/// swaps only the pairs found on the wrong sides from both ends (was:
+/// every object bound right, with the last unexamined one), and runs in
+/// a function of its own for each axis (the axis a constant; inlined,
+/// its two boxes lived on the stack).
 #[derive(Default)]
 struct Bins {
     bins: [Vec<Bin>; 3],
