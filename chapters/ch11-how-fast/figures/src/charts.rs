@@ -126,14 +126,28 @@ pub fn steps_chart() -> Result<Figure, ChartError> {
             c.draw_series(
                 points.iter().map(|&p| Circle::new(p, 6, BLUE.filled())),
             )?;
-            c.draw_series(points.iter().map(|&(x, y)| {
+            // Each value above its point, but below it where the point
+            // before is labelled above at nearly the same height (the two
+            // labels would touch).
+            let close = 0.08 * top_y;
+            let mut above = Vec::with_capacity(points.len());
+            for (i, &(_, y)) in points.iter().enumerate() {
+                let crowded = i > 0
+                    && above[i - 1]
+                    && (y - points[i - 1].1).abs() < close;
+                above.push(!crowded);
+            }
+            c.draw_series(points.iter().zip(&above).map(|(&(x, y), &up)| {
+                let (dy, v) = if up {
+                    (-9, VPos::Bottom)
+                } else {
+                    (9, VPos::Top)
+                };
                 EmptyElement::at((x, y))
                     + Text::new(
                         format!("{y:.2}"),
-                        (0, -9),
-                        font(13.0)
-                            .color(&BLACK)
-                            .pos(Pos::new(HPos::Center, VPos::Bottom)),
+                        (0, dy),
+                        font(13.0).color(&BLACK).pos(Pos::new(HPos::Center, v)),
                     )
             }))?;
         }
