@@ -138,7 +138,7 @@ pub fn costs_chart() -> Result<Figure, ChartError> {
     let height = 120 + 30 * primitives.len() as u32;
     chart(
         "costs-chart",
-        "One ray–primitive test, relative to the sphere's (log scale; hits against the sphere's hits, misses against its misses). The hits are random lines that hit the object; the misses are near misses, random lines through its bounding sphere (grown by a quarter) that miss it: the misses a bound cannot turn away. Medians of 11 rounds on this machine, one thread; the numbers at the right are nanoseconds per test (hit / miss).",
+        "One ray–primitive test, relative to the sphere's (log scale; hits against the sphere's hits, misses against its misses). The hits are random lines that hit the object; the misses are near misses, random lines through its bounding sphere (grown by a quarter) that miss it: the misses a bound cannot turn away. Medians of 7 rounds on this machine, one thread; the numbers at the right are nanoseconds per test (hit / miss).",
         900,
         height,
         |area| draw_costs(area, &rows, &primitives, hit, miss),
