@@ -21,6 +21,7 @@ use raystep_core::{DVec3, Interval, Ray32};
 use raystep_world::{MeshAccelerator, MeshHit, TraceCounts};
 
 use crate::built::Built;
+use crate::methods::EmbreeIsa;
 
 /// The names the library is looked for by: the runtime package's first
 /// (the unversioned link comes only with the development package).
@@ -255,11 +256,17 @@ struct Device {
 }
 
 impl Device {
-    fn new(api: &'static Api) -> Result<Device, String> {
+    fn new(
+        api: &'static Api, isa: Option<EmbreeIsa>,
+    ) -> Result<Device, String> {
         // "threads=N": Embree builds on as many threads as the bench's
         // pool has (`--threads`), as the appendix's parallel build does.
-        // (Tracing runs on the bench's threads regardless.)
-        let config = format!("threads={}\0", rayon::current_num_threads());
+        // (Tracing runs on the bench's threads regardless.) "isa=…": its
+        // kernels kept to that instruction set.
+        let isa =
+            isa.map_or(String::new(), |isa| format!(",isa={}", isa.name()));
+        let threads = rayon::current_num_threads();
+        let config = format!("threads={threads}{isa}\0");
         // SAFETY: a NUL-terminated string, only read during the call.
         let raw = unsafe { (api.new_device)(config.as_ptr().cast()) };
         if raw.is_null() {
@@ -531,7 +538,7 @@ pub fn probe() -> Result<u32, String> {
 }
 
 fn self_test(api: &'static Api) -> Result<u32, String> {
-    let device = Device::new(api)?;
+    let device = Device::new(api, None)?;
     let version = device.version();
     let triangle = [[DVec3::ZERO, DVec3::X, DVec3::Y]];
     let scene = Scene::new(device, &IndexedMesh::new(&triangle), false)?;
@@ -562,10 +569,13 @@ fn self_test(api: &'static Api) -> Result<u32, String> {
 /// Timed from the indexed mesh to a committed scene: filling Embree's
 /// buffers and its build. Finding the shared corners (our triangles come
 /// apart) and the device (one per application) are not timed.
-pub fn build(triangles: &[[DVec3; 3]], robust: bool) -> Built {
+/// With `isa`, its kernels are kept to that instruction set.
+pub fn build(
+    triangles: &[[DVec3; 3]], robust: bool, isa: Option<EmbreeIsa>,
+) -> Built {
     let api = api().unwrap_or_else(fail);
     let mesh = IndexedMesh::new(triangles);
-    let device = Device::new(api).unwrap_or_else(fail);
+    let device = Device::new(api, isa).unwrap_or_else(fail);
     let start = Instant::now();
     let scene = Scene::new(device, &mesh, robust).unwrap_or_else(fail);
     Built {
@@ -606,8 +616,9 @@ mod tests {
         assert_eq!(mesh.indices, [[0, 1, 2], [2, 1, 3]]);
     }
 
-    /// Where the library is installed: Embree's answers are brute force's,
-    /// `t` within its tolerance.
+    /// Where the library is installed: Embree's answers, with its default
+    /// kernels and kept to each instruction set this CPU has, are brute
+    /// force's, `t` within its tolerance.
     #[test]
     fn embree_agrees_with_brute_force() {
         let Ok(api) = api() else {
@@ -629,8 +640,27 @@ mod tests {
                 triangles.extend([[p, q, s], [p, s, r]]);
             }
         }
-        let built = build(&triangles, true);
-        let brute = MeshBruteForce(&triangles);
+        // Its default kernels, and those of every instruction set this CPU
+        // has (`--embree-isa`).
+        let here = [
+            (EmbreeIsa::Sse2, true),
+            (EmbreeIsa::Sse42, is_x86_feature_detected!("sse4.2")),
+            (EmbreeIsa::Avx, is_x86_feature_detected!("avx")),
+            (EmbreeIsa::Avx2, is_x86_feature_detected!("avx2")),
+            (EmbreeIsa::Avx512, is_x86_feature_detected!("avx512vl")),
+        ];
+        let isas = here.iter().filter(|(_, has)| *has).map(|(isa, _)| *isa);
+        for isa in std::iter::once(None).chain(isas.map(Some)) {
+            agrees_on_a_bumpy_sheet(&triangles, isa);
+        }
+    }
+
+    /// Embree robust, kept to `isa`, against brute force on 1 000 rays.
+    fn agrees_on_a_bumpy_sheet(
+        triangles: &[[DVec3; 3]], isa: Option<EmbreeIsa>,
+    ) {
+        let built = build(triangles, true, isa);
+        let brute = MeshBruteForce(triangles);
         let counts = &mut TraceCounts::default();
         let mut hits = 0;
         for k in 0..1000 {
@@ -655,17 +685,17 @@ mod tests {
                     (Some(a), Some(b)) => {
                         hits += 1;
                         let tolerance = OWN_TEST_TOLERANCE * a.max(b);
-                        assert!((a - b).abs() <= tolerance, "ray {k}");
+                        assert!((a - b).abs() <= tolerance, "{isa:?} ray {k}");
                     }
-                    _ => panic!("ray {k}: {ours:?} against {theirs:?}"),
+                    _ => panic!("{isa:?} ray {k}: {ours:?} against {theirs:?}"),
                 }
                 assert_eq!(
                     brute.any_hit(&ray, interval, counts),
                     built.tracer.any_hit(&ray, interval, counts),
-                    "ray {k}"
+                    "{isa:?} ray {k}"
                 );
             }
         }
-        assert!(hits > 300, "{hits} hits");
+        assert!(hits > 300, "{isa:?}: {hits} hits");
     }
 }

@@ -37,7 +37,7 @@ use raystep_scene::Mesh;
 
 pub use built::Built;
 pub use error::BenchError;
-pub use methods::{GridSpec, KdSpec, Method};
+pub use methods::{EmbreeIsa, GridSpec, KdSpec, Method};
 pub use ray_sets::{camera_rays, incoherent_rays};
 pub use rays::{
     Question, RAY_BYTES, RaySet, incoherent, primary, ray_bytes, read_rays,
@@ -84,6 +84,9 @@ pub struct BenchOptions {
     pub fast: Vec<ch11::Step>,
     /// Run the peers too (needs the `peers` feature).
     pub peers: bool,
+    /// With the peers, Embree's default build once more, its kernels kept
+    /// to this instruction set.
+    pub embree_isa: Option<EmbreeIsa>,
     /// Rays per set checked against brute force.
     pub brute_force: usize,
     /// Draw a progress bar (on a terminal).
@@ -221,7 +224,7 @@ pub fn run(options: &BenchOptions) -> Result<BenchRun, BenchError> {
     }
     let mut skipped = Vec::new();
     if options.peers {
-        methods.extend(Method::peers());
+        methods.extend(Method::peers(options.embree_isa));
         skipped = Method::skipped_peers();
     }
     let Some(&first) = methods.first() else {

@@ -40,7 +40,39 @@ pub enum Method {
         /// With its robust flag (`RTC_SCENE_FLAG_ROBUST`): no ray through
         /// a crack between triangles, a little slower.
         robust: bool,
+        /// The instruction set its kernels were told to use
+        /// (`--embree-isa`), or `None`: the best this CPU has, its default.
+        isa: Option<EmbreeIsa>,
     },
+}
+
+/// An instruction set Embree can be told to keep to (its device's `isa`
+/// setting): to compare its kernels on one CPU, in one run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EmbreeIsa {
+    /// SSE2.
+    Sse2,
+    /// SSE4.2.
+    Sse42,
+    /// AVX.
+    Avx,
+    /// AVX2.
+    Avx2,
+    /// AVX-512 (Skylake-X's set).
+    Avx512,
+}
+
+impl EmbreeIsa {
+    /// Its name in Embree's device settings (and in the bench's rows).
+    pub fn name(self) -> &'static str {
+        match self {
+            EmbreeIsa::Sse2 => "sse2",
+            EmbreeIsa::Sse42 => "sse4.2",
+            EmbreeIsa::Avx => "avx",
+            EmbreeIsa::Avx2 => "avx2",
+            EmbreeIsa::Avx512 => "avx512",
+        }
+    }
 }
 
 /// How one of our grids is made and walked.
@@ -123,12 +155,17 @@ impl Method {
             Method::ObvhsBvh2 => "obvhs Bvh2".into(),
             Method::ObvhsCwBvh => "obvhs CwBvh".into(),
             Method::BvhCrate => "bvh".into(),
-            Method::Embree { version, robust } => format!(
-                "Embree {}.{}.{}{}",
+            Method::Embree {
+                version,
+                robust,
+                isa,
+            } => format!(
+                "Embree {}.{}.{}{}{}",
                 version / 10000,
                 version / 100 % 100,
                 version % 100,
-                if *robust { " robust" } else { "" }
+                if *robust { " robust" } else { "" },
+                isa.map_or(String::new(), |isa| format!(" {}", isa.name()))
             ),
         }
     }
@@ -154,7 +191,9 @@ impl Method {
 
     /// The peers this build was compiled with that can run here (none
     /// without the `peers` feature; Embree only where its library loads).
-    pub fn peers() -> Vec<Method> {
+    /// With `isa`, Embree's default build a third time, its kernels kept
+    /// to that instruction set.
+    pub fn peers(isa: Option<EmbreeIsa>) -> Vec<Method> {
         let mut peers = Vec::new();
         if cfg!(feature = "peers") {
             peers.extend([
@@ -168,12 +207,23 @@ impl Method {
             peers.push(Method::Embree {
                 version,
                 robust: false,
+                isa: None,
             });
             peers.push(Method::Embree {
                 version,
                 robust: true,
+                isa: None,
             });
+            if isa.is_some() {
+                peers.push(Method::Embree {
+                    version,
+                    robust: false,
+                    isa,
+                });
+            }
         }
+        #[cfg(not(feature = "embree"))]
+        let _ = isa;
         peers
     }
 
@@ -247,8 +297,8 @@ impl Method {
                 }
             }
             #[cfg(feature = "embree")]
-            Method::Embree { robust, .. } => {
-                crate::embree::build(triangles, robust)
+            Method::Embree { robust, isa, .. } => {
+                crate::embree::build(triangles, robust, isa)
             }
             #[cfg(feature = "peers")]
             Method::ObvhsBvh2 => crate::peers::obvhs_bvh2(triangles),
@@ -259,5 +309,28 @@ impl Method {
             #[allow(unreachable_patterns)] // with `peers` and `embree` on
             _ => unreachable!("a peer is built only with its feature"),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Embree's rows are told apart by their names: the robust one, and
+    /// the one kept to an instruction set (`--embree-isa`).
+    #[test]
+    fn embree_rows_are_named_by_flag_and_instruction_set() {
+        let embree = |robust, isa| Method::Embree {
+            version: 31305,
+            robust,
+            isa,
+        };
+        assert_eq!(embree(false, None).name(), "Embree 3.13.5");
+        assert_eq!(embree(true, None).name(), "Embree 3.13.5 robust");
+        assert_eq!(
+            embree(false, Some(EmbreeIsa::Avx2)).name(),
+            "Embree 3.13.5 avx2"
+        );
+        assert_eq!(EmbreeIsa::Sse42.name(), "sse4.2");
     }
 }

@@ -286,6 +286,7 @@ mod tests {
             &Method::Embree {
                 version: 31305,
                 robust: false,
+                isa: None,
             },
             &sets,
         );

@@ -247,6 +247,7 @@ mod tests {
         let embree = Method::Embree {
             version: 31305,
             robust: false,
+            isa: None,
         };
         assert_eq!(tolerance(&Method::BvhCrate, &ours), None);
         assert_eq!(tolerance(&embree, &ours), Some(OWN_TEST_TOLERANCE));

@@ -49,6 +49,36 @@ impl BuilderArg {
     }
 }
 
+/// `--embree-isa`: the instruction set Embree's third row keeps to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum EmbreeIsaArg {
+    /// SSE2.
+    Sse2,
+    /// SSE4.2.
+    #[value(name = "sse4.2")]
+    Sse42,
+    /// AVX.
+    Avx,
+    /// AVX2.
+    Avx2,
+    /// AVX-512.
+    Avx512,
+}
+
+impl EmbreeIsaArg {
+    /// The bench's value.
+    pub fn isa(self) -> raystep_bench::EmbreeIsa {
+        use raystep_bench::EmbreeIsa as Isa;
+        match self {
+            EmbreeIsaArg::Sse2 => Isa::Sse2,
+            EmbreeIsaArg::Sse42 => Isa::Sse42,
+            EmbreeIsaArg::Avx => Isa::Avx,
+            EmbreeIsaArg::Avx2 => Isa::Avx2,
+            EmbreeIsaArg::Avx512 => Isa::Avx512,
+        }
+    }
+}
+
 /// `--accel`: which of our structures to run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum AccelArg {

@@ -208,6 +208,11 @@ enum Command {
         /// libembree3, loaded at run time: reported skipped if missing).
         #[arg(long)]
         peers: bool,
+        /// With `--peers`, Embree's default build a third time, its kernels
+        /// kept to this instruction set (its row named so): to compare
+        /// Embree's kernels for two instruction sets in one run.
+        #[arg(long, value_name = "ISA", requires = "peers")]
+        embree_isa: Option<bench::EmbreeIsaArg>,
         /// Rays of each set checked against brute force (evenly spread).
         #[arg(long, value_name = "N", default_value_t = 1000)]
         brute_force: usize,
@@ -462,6 +467,7 @@ fn main() -> ExitCode {
             kd_clip,
             fast,
             peers,
+            embree_isa,
             brute_force,
             json,
             write_hits,
@@ -506,6 +512,7 @@ fn main() -> ExitCode {
                     Vec::new()
                 },
                 peers,
+                embree_isa: embree_isa.map(bench::EmbreeIsaArg::isa),
                 brute_force,
                 progress: io::stderr().is_terminal(),
             },

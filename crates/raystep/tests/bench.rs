@@ -272,6 +272,10 @@ fn bad_input_is_refused_by_name_and_writes_nothing() {
     // Threads: none, not a number.
     refused(&dir, &[obj, "--threads", "0"], "--threads");
     refused(&dir, &[obj, "--threads", "abc"], "--threads");
+    // Embree kept to an instruction set: only beside the peers, and only
+    // one it knows.
+    refused(&dir, &[obj, "--embree-isa", "avx2"], "--peers");
+    refused(&dir, &[obj, "--peers", "--embree-isa", "neon"], "neon");
     // An output folder that does not exist: refused before any work.
     let nowhere = dir.join("no/such/folder/report.json");
     let run = raystep(&[

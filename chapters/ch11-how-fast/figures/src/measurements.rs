@@ -89,7 +89,7 @@ pub fn steps(repeats: usize) -> u64 {
 pub fn measure_steps(
     repeats: usize, step: &mut dyn FnMut(),
 ) -> Result<Vec<StepRow>, String> {
-    let peers = Method::peers();
+    let peers = Method::peers(None);
     if peers.is_empty() {
         return Err("the appendix compares with obvhs, bvh and Embree: \
              run `cargo run --release --features embree -- measure \
