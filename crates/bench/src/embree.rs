@@ -21,7 +21,7 @@ use raystep_core::{DVec3, Interval, Ray32};
 use raystep_world::{MeshAccelerator, MeshHit, TraceCounts};
 
 use crate::built::Built;
-use crate::methods::EmbreeIsa;
+use crate::embree_isa::EmbreeIsa;
 
 /// The names the library is looked for by: the runtime package's first
 /// (the unversioned link comes only with the development package).

@@ -17,6 +17,7 @@
 mod built;
 #[cfg(feature = "embree")]
 mod embree;
+mod embree_isa;
 mod error;
 mod methods;
 #[cfg(feature = "peers")]
@@ -36,8 +37,9 @@ use raystep_core::{Aabb, DVec3};
 use raystep_scene::Mesh;
 
 pub use built::Built;
+pub use embree_isa::EmbreeIsa;
 pub use error::BenchError;
-pub use methods::{EmbreeIsa, GridSpec, KdSpec, Method};
+pub use methods::{GridSpec, KdSpec, Method};
 pub use ray_sets::{camera_rays, incoherent_rays};
 pub use rays::{
     Question, RAY_BYTES, RaySet, incoherent, primary, ray_bytes, read_rays,

@@ -12,6 +12,7 @@ use ch10::{Clip, KdBuilder, KdCosts, MeshKd};
 use raystep_core::DVec3;
 
 use crate::built::Built;
+use crate::embree_isa::EmbreeIsa;
 
 /// One method of the comparison.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -44,35 +45,6 @@ pub enum Method {
         /// (`--embree-isa`), or `None`: the best this CPU has, its default.
         isa: Option<EmbreeIsa>,
     },
-}
-
-/// An instruction set Embree can be told to keep to (its device's `isa`
-/// setting): to compare its kernels on one CPU, in one run.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum EmbreeIsa {
-    /// SSE2.
-    Sse2,
-    /// SSE4.2.
-    Sse42,
-    /// AVX.
-    Avx,
-    /// AVX2.
-    Avx2,
-    /// AVX-512 (Skylake-X's set).
-    Avx512,
-}
-
-impl EmbreeIsa {
-    /// Its name in Embree's device settings (and in the bench's rows).
-    pub fn name(self) -> &'static str {
-        match self {
-            EmbreeIsa::Sse2 => "sse2",
-            EmbreeIsa::Sse42 => "sse4.2",
-            EmbreeIsa::Avx => "avx",
-            EmbreeIsa::Avx2 => "avx2",
-            EmbreeIsa::Avx512 => "avx512",
-        }
-    }
 }
 
 /// How one of our grids is made and walked.
