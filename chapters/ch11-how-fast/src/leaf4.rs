@@ -457,12 +457,18 @@ unsafe fn test4(block: &Triangle4, ray: &FastRay) -> Tested {
         let splat = _mm256_set1_pd;
         // Step 1: the corners sheared: p = v − o, x = p[kx] − sx·p[kz],
         // y = p[ky] − sy·p[kz], z = sz·p[kz], four triangles per register.
+        // The origin's three coordinates taken from an array: indexing
+        // glam's `DVec3` by a run-time axis is a `match`, and took a third
+        // of this test's instructions (branches picking o[kx] for each
+        // corner and axis; counted with callgrind).
+        let o = o.to_array();
+        let (ox, oy, oz) = (splat(o[kx]), splat(o[ky]), splat(o[kz]));
         let corner = |c: usize| {
-            let p = |axis: usize| {
+            let p = |axis: usize, o| {
                 let row = _mm_load_ps(block.rows[c][axis].as_ptr());
-                _mm256_sub_pd(_mm256_cvtps_pd(row), splat(o[axis]))
+                _mm256_sub_pd(_mm256_cvtps_pd(row), o)
             };
-            let (px, py, pz) = (p(kx), p(ky), p(kz));
+            let (px, py, pz) = (p(kx, ox), p(ky, oy), p(kz, oz));
             let x = _mm256_sub_pd(px, _mm256_mul_pd(splat(s.x), pz));
             let y = _mm256_sub_pd(py, _mm256_mul_pd(splat(s.y), pz));
             (x, y, _mm256_mul_pd(splat(s.z), pz))

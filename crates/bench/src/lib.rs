@@ -89,6 +89,8 @@ pub struct BenchOptions {
     /// With the peers, Embree's default build once more, its kernels kept
     /// to this instruction set.
     pub embree_isa: Option<EmbreeIsa>,
+    /// With the peers, Embree's default mode alone ([`Method::embree_alone`]).
+    pub embree_alone: bool,
     /// Rays per set checked against brute force.
     pub brute_force: usize,
     /// Draw a progress bar (on a terminal).
@@ -226,7 +228,12 @@ pub fn run(options: &BenchOptions) -> Result<BenchRun, BenchError> {
     }
     let mut skipped = Vec::new();
     if options.peers {
-        methods.extend(Method::peers(options.embree_isa));
+        let peers = Method::peers(options.embree_isa);
+        methods.extend(if options.embree_alone {
+            Method::embree_alone(peers)
+        } else {
+            peers
+        });
         skipped = Method::skipped_peers();
     }
     let Some(&first) = methods.first() else {

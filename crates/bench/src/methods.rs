@@ -199,6 +199,16 @@ impl Method {
         peers
     }
 
+    /// Of `peers`, Embree in its default mode only (with `--embree-isa`,
+    /// also its row kept to that instruction set): `raystep bench
+    /// --embree-alone`.
+    pub fn embree_alone(peers: Vec<Method>) -> Vec<Method> {
+        peers
+            .into_iter()
+            .filter(|m| matches!(m, Method::Embree { robust: false, .. }))
+            .collect()
+    }
+
     /// The peers this build has (the `peers` feature) that cannot run
     /// here, one line each saying why: Embree, where its library does not
     /// load or was not built in.
@@ -304,5 +314,26 @@ mod tests {
             "Embree 3.13.5 avx2"
         );
         assert_eq!(EmbreeIsa::Sse42.name(), "sse4.2");
+    }
+
+    #[test]
+    fn embree_alone_keeps_its_default_mode_only() {
+        let embree = |robust, isa| Method::Embree {
+            version: 31305,
+            robust,
+            isa,
+        };
+        let peers = vec![
+            Method::ObvhsBvh2,
+            Method::ObvhsCwBvh,
+            Method::BvhCrate,
+            embree(false, None),
+            embree(true, None),
+            embree(false, Some(EmbreeIsa::Avx2)),
+        ];
+        assert_eq!(
+            Method::embree_alone(peers),
+            vec![embree(false, None), embree(false, Some(EmbreeIsa::Avx2))]
+        );
     }
 }

@@ -213,6 +213,11 @@ enum Command {
         /// Embree's kernels for two instruction sets in one run.
         #[arg(long, value_name = "ISA", requires = "peers")]
         embree_isa: Option<bench::EmbreeIsaArg>,
+        /// With `--peers`, Embree's default mode the only peer (no obvhs,
+        /// no bvh, not its robust mode): for counting its instructions
+        /// with callgrind, where both of its modes run `rtcIntersect1`.
+        #[arg(long, requires = "peers")]
+        embree_alone: bool,
         /// Rays of each set checked against brute force (evenly spread).
         #[arg(long, value_name = "N", default_value_t = 1000)]
         brute_force: usize,
@@ -468,6 +473,7 @@ fn main() -> ExitCode {
             fast,
             peers,
             embree_isa,
+            embree_alone,
             brute_force,
             json,
             write_hits,
@@ -513,6 +519,7 @@ fn main() -> ExitCode {
                 },
                 peers,
                 embree_isa: embree_isa.map(bench::EmbreeIsaArg::isa),
+                embree_alone,
                 brute_force,
                 progress: io::stderr().is_terminal(),
             },

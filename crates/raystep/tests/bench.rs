@@ -276,6 +276,7 @@ fn bad_input_is_refused_by_name_and_writes_nothing() {
     // one it knows.
     refused(&dir, &[obj, "--embree-isa", "avx2"], "--peers");
     refused(&dir, &[obj, "--peers", "--embree-isa", "neon"], "neon");
+    refused(&dir, &[obj, "--embree-alone"], "--peers");
     // An output folder that does not exist: refused before any work.
     let nowhere = dir.join("no/such/folder/report.json");
     let run = raystep(&[
