@@ -37,7 +37,9 @@ pub unsafe fn test8(pair: [&Triangle4; 2], ray: &FastRay) -> [Tested; 2] {
     // aligned [f32; 4] row, the store writes eight f64s into a [f64; 8].
     unsafe {
         let [kx, ky, kz] = ray.axes;
-        let (o, s) = (ray.origin64, ray.shear);
+        // The origin as an array: glam's `DVec3` indexed by a run-time
+        // axis is a `match`, compiled into branches (see `leaf4::test4`).
+        let (o, s) = (ray.origin64.to_array(), ray.shear);
         let splat = _mm512_set1_pd;
         // Step 1: the corners sheared, the two blocks' rows side by side
         // (widened from f32 exactly).

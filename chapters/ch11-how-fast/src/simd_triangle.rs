@@ -85,7 +85,9 @@ unsafe fn watertight4(
         // Step 1: the three corners sheared at once (chapter 8's steps
         // 1–3): p = v − o, x = p[kx] − sx·p[kz], y = …, z = sz·p[kz].
         let [kx, ky, kz] = ray.axes;
-        let (o, s) = (ray.origin64, ray.shear);
+        // The origin as an array: glam's `DVec3` indexed by a run-time
+        // axis is a `match`, compiled into branches (see `leaf4::test4`).
+        let (o, s) = (ray.origin64.to_array(), ray.shear);
         let p = |axis: usize| {
             let row = _mm_load_ps(triangle.rows[axis].as_ptr());
             _mm256_sub_pd(_mm256_cvtps_pd(row), _mm256_set1_pd(o[axis]))
